@@ -1,0 +1,22 @@
+#pragma once
+// parallax-cli: one CLI11 app, one subcommand per file (TraceCommand.cpp, ...).
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+namespace px::cli {
+
+// A subcommand's action: returns the process exit status; prints its own "error: ..." lines.
+using Action = std::function<int()>;
+
+// Every subcommand registers itself through one of these (declared here, defined in its file).
+Action addTraceCommand(CLI::App& app);
+
+// Prints "error: <message>" to stderr and returns the failure status.
+int fail(const std::string& message);
+
+int run(int argc, char** argv);
+
+} // namespace px::cli

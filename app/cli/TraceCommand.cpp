@@ -1,0 +1,100 @@
+// parallax-cli trace: the canonical scene of CONVENTIONS §5 with one technique, as CSV.
+
+#include "Cli.h"
+#include "CommonOptions.h"
+#include "parallax/io/AtomicWrite.h"
+#include "parallax/trace/TraceScene.h"
+
+#include <memory>
+#include <optional>
+
+namespace px::cli {
+
+namespace {
+
+struct TraceOptions {
+    HeightOptions height;
+    float scale = 0.05f;
+    double polar = 45.0;
+    double azimuth = 0.0;
+    int rays = 64;
+    std::string technique = "exact";
+    std::optional<int> minLayers, maxLayers, binarySteps, secantSteps, maxSteps;
+    std::string out;
+};
+
+std::vector<std::string> techniqueNames() {
+    std::vector<std::string> names;
+    for (const TechniqueInfo& t : allTechniques())
+        names.emplace_back(t.name);
+    return names;
+}
+
+int runTrace(const TraceOptions& o) {
+    const Technique technique = *parseTechnique(o.technique);
+    TraceParams params = info(technique).defaults;
+    if (o.minLayers)
+        params.minLayers = *o.minLayers;
+    if (o.maxLayers)
+        params.maxLayers = *o.maxLayers;
+    if (o.binarySteps)
+        params.binarySteps = *o.binarySteps;
+    if (o.secantSteps)
+        params.secantSteps = *o.secantSteps;
+    if (o.maxSteps)
+        params.maxSteps = *o.maxSteps;
+
+    TraceScene scene;
+    scene.rays = o.rays;
+    scene.polarDeg = o.polar;
+    scene.azimuthDeg = o.azimuth;
+    if (Status s = validate(scene); !s)
+        return fail(s.error().message);
+
+    Result<HeightField> field = o.height.load();
+    if (!field)
+        return fail(field.error().message);
+    TraceMaps maps;
+    maps.height = &*field;
+    maps.wrap = o.height.wrapMode();
+    Result<Tracer> tracer = Tracer::create(maps, technique, params, o.scale);
+    if (!tracer)
+        return fail(tracer.error().message);
+
+    const std::vector<TraceResult> results = traceScene(*tracer, scene);
+    if (Status s = writeTextFile(o.out, traceCsv(scene, results)); !s)
+        return fail(s.error().message);
+    return 0;
+}
+
+} // namespace
+
+Action addTraceCommand(CLI::App& app) {
+    auto o = std::make_shared<TraceOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "trace", "Trace the canonical scene (R x R rays, one direction) and write each hit as CSV");
+    o->height.addTo(*cmd);
+    cmd->add_option("--scale", o->scale, "Height scale s in uv units (depth of h = 0)")
+        ->check(CLI::Range(0.0f, 100.0f));
+    cmd->add_option("--polar", o->polar, "View angle from the normal, degrees [0, 90)")
+        ->check(CLI::Range(0.0, 89.999));
+    cmd->add_option("--azimuth", o->azimuth, "View azimuth from +u towards +v, degrees")
+        ->check(CLI::Range(-360.0, 360.0));
+    cmd->add_option("--rays", o->rays, "Rays per side (R)")->check(CLI::Range(1, 4096));
+    cmd->add_option("--technique", o->technique, "Technique")
+        ->check(CLI::IsMember(techniqueNames()));
+    cmd->add_option("--min-layers", o->minLayers, "Layers looking straight down")
+        ->check(CLI::Range(1, kMaxLayersLimit));
+    cmd->add_option("--max-layers", o->maxLayers, "Layers at grazing angles")
+        ->check(CLI::Range(1, kMaxLayersLimit));
+    cmd->add_option("--binary-steps", o->binarySteps, "Binary search steps (relief, relaxed-cone)")
+        ->check(CLI::Range(0, kMaxRefineLimit));
+    cmd->add_option("--secant-steps", o->secantSteps, "Secant steps (secant)")
+        ->check(CLI::Range(0, kMaxRefineLimit));
+    cmd->add_option("--max-steps", o->maxSteps, "Cap on cone steps, cells or pyramid nodes")
+        ->check(CLI::Range(1, kMaxStepsLimit));
+    cmd->add_option("--out", o->out, "Output CSV (i,j,u,v,t,fetches)")->required();
+    return [o] { return runTrace(*o); };
+}
+
+} // namespace px::cli

@@ -1,0 +1,41 @@
+#pragma once
+// Reading and writing image files (OpenImageIO behind the scenes; no OIIO type leaks out).
+// Failures come back as a sentence naming the file; writes are atomic: the data goes to a
+// temporary file in the target's folder which is then renamed, so a failed or cancelled write
+// never leaves half a file and never touches an existing target.
+
+#include "parallax/Result.h"
+#include "parallax/image/Image.h"
+
+#include <string>
+
+namespace px {
+
+struct ImageReadOptions {
+    int maxSide = 16384;     // larger images are refused unless this is raised
+    bool rejectNonFinite = true; // NaN/Inf texels are an error (count and first position)
+};
+
+// Reads every channel of the first subimage as float, values as stored (8/16-bit scaled to
+// [0,1], float verbatim). Errors: missing or unreadable file, not an image, truncated data,
+// zero size, a side over maxSide, NaN/Inf texels.
+Result<Image> readImage(const std::string& path, const ImageReadOptions& options = {});
+
+enum class PixelFormat { UInt8, UInt16, Half, Float };
+
+struct ImageWriteOptions {
+    PixelFormat format = PixelFormat::UInt8;
+    bool srgb = false; // tags the file as sRGB (albedo); pixel values are written as given
+};
+
+// The pixel format a bit count names: 8, 16, or 32 (float). Others are an error.
+Result<PixelFormat> pixelFormatFromBits(int bits);
+
+// True if the file's extension names a format that can store `format` (e.g. PNG has no float).
+bool extensionSupports(const std::string& path, PixelFormat format);
+
+// Writes atomically. Integer formats clamp to [0,1] and round to nearest; callers that need
+// another rounding (cone maps round down) quantise before calling.
+Status writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options);
+
+} // namespace px

@@ -1,0 +1,161 @@
+#include "parallax/image/ImageFile.h"
+
+#include "parallax/io/AtomicWrite.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <system_error>
+
+namespace px {
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+// OIIO's messages end with newlines and sometimes repeat the file name; keep one clean line.
+std::string oiioMessage(std::string message) {
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+        message.pop_back();
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    return message.empty() ? std::string("unknown image library error") : message;
+}
+
+OIIO::TypeDesc typeOf(PixelFormat format) {
+    switch (format) {
+    case PixelFormat::UInt8:
+        return OIIO::TypeDesc::UINT8;
+    case PixelFormat::UInt16:
+        return OIIO::TypeDesc::UINT16;
+    case PixelFormat::Half:
+        return OIIO::TypeDesc::HALF;
+    case PixelFormat::Float:
+        return OIIO::TypeDesc::FLOAT;
+    }
+    return OIIO::TypeDesc::UINT8;
+}
+
+Status checkFinite(const std::string& path, const Image& image) {
+    std::size_t count = 0;
+    std::size_t first = 0;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        if (!std::isfinite(image.pixels[i])) {
+            if (count++ == 0)
+                first = i;
+        }
+    }
+    if (count == 0)
+        return success();
+    const std::size_t texel = first / image.channels;
+    const int x = static_cast<int>(texel % image.width);
+    const int y = static_cast<int>(texel / image.width);
+    return fileError(path, std::to_string(count) + " NaN or infinite value" +
+                               (count == 1 ? "" : "s") + ", the first at texel (" +
+                               std::to_string(x) + ", " + std::to_string(y) + ") channel " +
+                               std::to_string(first % image.channels));
+}
+
+} // namespace
+
+Result<Image> readImage(const std::string& path, const ImageReadOptions& options) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        return fileError(path, "no such file");
+    if (std::filesystem::is_directory(path, ec))
+        return fileError(path, "is a folder, not an image file");
+    if (std::filesystem::file_size(path, ec) == 0 && !ec)
+        return fileError(path, "the file is empty (0 bytes)");
+
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1); // material maps are not premultiplied
+    auto input = OIIO::ImageInput::open(path, &config);
+    if (!input)
+        return fileError(path, "not a readable image (" + oiioMessage(OIIO::geterror()) + ")");
+
+    const OIIO::ImageSpec& spec = input->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+        return fileError(path, "the image has zero size");
+    if (spec.depth > 1)
+        return fileError(path, "volume images are not supported");
+    if (spec.width > options.maxSide || spec.height > options.maxSide)
+        return fileError(path, "the image is " + std::to_string(spec.width) + "x" +
+                                   std::to_string(spec.height) + ", larger than the limit of " +
+                                   std::to_string(options.maxSide) + " texels a side");
+
+    Image image(spec.width, spec.height, spec.nchannels);
+    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+        return fileError(path, "the image data could not be read, the file may be truncated (" +
+                                   oiioMessage(input->geterror()) + ")");
+    input->close();
+    if (options.rejectNonFinite) {
+        if (Status finite = checkFinite(path, image); !finite)
+            return finite.error();
+    }
+    return image;
+}
+
+Result<PixelFormat> pixelFormatFromBits(int bits) {
+    switch (bits) {
+    case 8:
+        return PixelFormat::UInt8;
+    case 16:
+        return PixelFormat::UInt16;
+    case 32:
+        return PixelFormat::Float;
+    default:
+        return Error{"bit depth " + std::to_string(bits) + " is not one of 8, 16, 32 (float)"};
+    }
+}
+
+bool extensionSupports(const std::string& path, PixelFormat format) {
+    const std::string ext = lowerExtension(path);
+    if (ext == ".png")
+        return format == PixelFormat::UInt8 || format == PixelFormat::UInt16;
+    if (ext == ".exr")
+        return format == PixelFormat::Half || format == PixelFormat::Float;
+    if (ext == ".tif" || ext == ".tiff")
+        return true;
+    if (ext == ".bmp" || ext == ".jpg" || ext == ".jpeg" || ext == ".tga")
+        return format == PixelFormat::UInt8;
+    return false;
+}
+
+Status writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options) {
+    if (image.empty())
+        return fileError(path, "refusing to write an empty image");
+    if (!extensionSupports(path, options.format))
+        return fileError(path, "this file type cannot store the requested pixel format "
+                               "(PNG: 8/16-bit, EXR: half/float, TIFF: any)");
+
+    auto output = OIIO::ImageOutput::create(path);
+    if (!output)
+        return fileError(path, "no image writer for this extension");
+
+    OIIO::ImageSpec spec(image.width, image.height, image.channels, typeOf(options.format));
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    spec.attribute("oiio:ColorSpace", options.srgb ? "sRGB" : "Linear");
+    if (lowerExtension(path) == ".exr")
+        spec.attribute("compression", "zip");
+
+    const std::filesystem::path target(path);
+    const std::filesystem::path temp = temporaryPathFor(target);
+    if (!output->open(temp.string(), spec))
+        return fileError(path, "cannot create the file (" + oiioMessage(output->geterror()) + ")");
+    const bool written = output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
+    const bool closed = output->close();
+    if (!written || !closed) {
+        std::error_code ignored;
+        std::filesystem::remove(temp, ignored);
+        return fileError(path, "writing failed (" + oiioMessage(output->geterror()) + ")");
+    }
+    return commitTemporary(temp, target);
+}
+
+} // namespace px

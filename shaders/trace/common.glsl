@@ -1,0 +1,159 @@
+// Shared by every technique. Conventions: ../../../shared/CONVENTIONS.md §2 and §5; cell space
+// and the cell solve: CONE_MAPS.md ("cell coordinates X = uW - 1/2").
+//
+// Bindings each side provides:
+//   ivec2 pxMapSize; bool pxWrapRepeat; float pxHeightMax; float pxScale;
+//   int pxMinLayers, pxMaxLayers, pxRefineSteps, pxMaxSteps; int pxFetches;
+//   float pxHeightTexel(ivec2 texel)      texel already wrapped or clamped
+//   vec2  pxConeTexel(ivec2 texel)        (height, sqrt(cone ratio))
+//   float pxMaxMipNode(int level, ivec2 node)
+//   ivec2 pxMaxMipSize(int level); int pxMaxMipTop
+
+#define PX_BIG 1.0e30f
+
+// floor(a / b) for b > 0, well defined for negative a (GLSL leaves % and / on negatives open).
+int pxFloorDiv(int a, int b) {
+    return a >= 0 ? a / b : -((-a - 1) / b) - 1;
+}
+
+int pxWrapIndex(int i, int size) {
+    if (!pxWrapRepeat)
+        return clamp(i, 0, size - 1);
+    return i - size * pxFloorDiv(i, size);
+}
+
+ivec2 pxWrapTexel(ivec2 texel) {
+    return ivec2(pxWrapIndex(texel.x, pxMapSize.x), pxWrapIndex(texel.y, pxMapSize.y));
+}
+
+// Bilinear weights and the top-left texel of the 2x2 footprint of a uv.
+vec2 pxCellCoords(vec2 uv) {
+    return vec2(uv.x * float(pxMapSize.x) - 0.5f, uv.y * float(pxMapSize.y) - 0.5f);
+}
+
+// One bilinear sample of the height map: one fetch.
+float pxHeight(vec2 uv) {
+    pxFetches += 1;
+    vec2 c = pxCellCoords(uv);
+    vec2 base = floor(c);
+    vec2 f = c - base;
+    ivec2 i = ivec2(base);
+    float h00 = pxHeightTexel(pxWrapTexel(i));
+    float h10 = pxHeightTexel(pxWrapTexel(ivec2(i.x + 1, i.y)));
+    float h01 = pxHeightTexel(pxWrapTexel(ivec2(i.x, i.y + 1)));
+    float h11 = pxHeightTexel(pxWrapTexel(ivec2(i.x + 1, i.y + 1)));
+    return mix(mix(h00, h10, f.x), mix(h01, h11, f.x), f.y);
+}
+
+// One bilinear sample of the cone map: (height, cone ratio). G holds sqrt(ratio) (CONVENTIONS §4),
+// interpolated before squaring as a GPU sampler would.
+vec2 pxConeSample(vec2 uv) {
+    pxFetches += 1;
+    vec2 c = pxCellCoords(uv);
+    vec2 base = floor(c);
+    vec2 f = c - base;
+    ivec2 i = ivec2(base);
+    vec2 a = pxConeTexel(pxWrapTexel(i));
+    vec2 b = pxConeTexel(pxWrapTexel(ivec2(i.x + 1, i.y)));
+    vec2 d = pxConeTexel(pxWrapTexel(ivec2(i.x, i.y + 1)));
+    vec2 e = pxConeTexel(pxWrapTexel(ivec2(i.x + 1, i.y + 1)));
+    vec2 s = mix(mix(a, b, f.x), mix(d, e, f.x), f.y);
+    return vec2(s.x, s.y * s.y);
+}
+
+// The four corners of a cell (h00, h10, h01, h11): one gather.
+vec4 pxCellCorners(ivec2 cell) {
+    pxFetches += 1;
+    return vec4(pxHeightTexel(pxWrapTexel(cell)),
+                pxHeightTexel(pxWrapTexel(ivec2(cell.x + 1, cell.y))),
+                pxHeightTexel(pxWrapTexel(ivec2(cell.x, cell.y + 1))),
+                pxHeightTexel(pxWrapTexel(ivec2(cell.x + 1, cell.y + 1))));
+}
+
+// Nothing lies above the highest texel: every march may start where the ray drops to it.
+float pxStartT() {
+    return clamp(1.0f - pxHeightMax, 0.0f, 1.0f);
+}
+
+// cos of the polar angle, from P = s tan(theta) dir (CONVENTIONS §5).
+float pxCosTheta(vec2 P) {
+    float tanTheta = pxScale > 0.0f ? length(P) / pxScale : 0.0f;
+    return inversesqrt(1.0f + tanTheta * tanTheta);
+}
+
+// The seeds' quality range: maxLayers at grazing angles, minLayers looking straight down.
+int pxLayerCount(vec2 P) {
+    float n = mix(float(pxMaxLayers), float(pxMinLayers), pxCosTheta(P));
+    return max(1, int(n + 0.5f));
+}
+
+// f(t) = h(uv(t)) - (1 - t): the ray is at or below the surface where f >= 0.
+float pxDepthGap(vec2 uv0, vec2 P, float t) {
+    return pxHeight(uv0 + P * t) - (1.0f - t);
+}
+
+// Smallest s in [0, sMax] with A s^2 + B s + C >= 0, given C < 0; -1 if none. Uses the
+// cancellation-free form of the roots: the textbook one loses the small root when 4AC << B^2.
+float pxFirstRoot(float A, float B, float C, float sMax) {
+    float best = -1.0f;
+    if (A == 0.0f) {
+        if (B > 0.0f)
+            best = -C / B;
+    } else {
+        float D = B * B - 4.0f * A * C;
+        if (D >= 0.0f) {
+            float q = -0.5f * (B + (B >= 0.0f ? sqrt(D) : -sqrt(D)));
+            float r1 = q / A;
+            float r2 = q != 0.0f ? C / q : -1.0f;
+            float lo = min(r1, r2);
+            float hi = max(r1, r2);
+            best = lo >= 0.0f ? lo : hi;
+        }
+    }
+    return (best >= 0.0f && best <= sMax) ? best : -1.0f;
+}
+
+// The exact first hit of the ray with the bilinear patch of `cell` for t in [ta, tb], or -1.
+// X0, dXY: cell-space position at t = 0 and its derivative (cells per unit t).
+float pxSolveCell(ivec2 cell, vec2 X0, vec2 dXY, float ta, float tb) {
+    vec4 h = pxCellCorners(cell);
+    float ax = X0.x + dXY.x * ta - float(cell.x);
+    float ay = X0.y + dXY.y * ta - float(cell.y);
+    float k = h.x - h.y - h.z + h.w;
+    float hx = h.y - h.x;
+    float hy = h.z - h.x;
+    float C = h.x + hx * ax + hy * ay + k * ax * ay - (1.0f - ta);
+    if (C >= 0.0f)
+        return ta;
+    float A = k * dXY.x * dXY.y;
+    float B = hx * dXY.x + hy * dXY.y + k * (ax * dXY.y + ay * dXY.x) + 1.0f;
+    float s = pxFirstRoot(A, B, C, tb - ta);
+    return s >= 0.0f ? ta + s : -1.0f;
+}
+
+// The cell the ray occupies just after t: on a cell border, the one it is entering.
+int pxCellAlong(float X, float dX) {
+    return dX >= 0.0f ? int(floor(X)) : int(ceil(X)) - 1;
+}
+
+// t at which the ray, in `cell`, crosses the cell's far border on one axis (PX_BIG if parallel).
+float pxBorderT(int cell, float X0, float dX) {
+    if (dX > 0.0f)
+        return (float(cell + 1) - X0) / dX;
+    if (dX < 0.0f)
+        return (float(cell) - X0) / dX;
+    return PX_BIG;
+}
+
+// Looking straight down (or with s = 0) every technique reduces to one fetch: t = 1 - h(uv0).
+float pxTraceStraightDown(vec2 uv0) {
+    return 1.0f - pxHeight(uv0);
+}
+
+// The offset a ray may travel is bounded (TECHNIQUES.md: never divide by a z that can be 0):
+// grazing views reach the bound instead of infinity, and NaN becomes a straight-down view.
+#define PX_MAX_PARALLAX 1.0e4f
+vec2 pxBoundParallax(vec2 P) {
+    return vec2(isnan(P.x) ? 0.0f : clamp(P.x, -PX_MAX_PARALLAX, PX_MAX_PARALLAX),
+                isnan(P.y) ? 0.0f : clamp(P.y, -PX_MAX_PARALLAX, PX_MAX_PARALLAX));
+}

@@ -1,0 +1,51 @@
+// Cone stepping, shared by `cone` (Dummer 2006: conservative cones) and `relaxed-cone`
+// (Policarpo & Oliveira, GPU Gems 3 ch. 18: a ray may enter the solid once, then binary search).
+// The step inside a cone is dt = c (z - h) / (c + |P|). Where that would not leave the current
+// cell, the cell is solved exactly instead (CONE_MAPS.md "cell max tracing"): zero cones cannot
+// stall the march and features smaller than a cell are not stepped over.
+
+struct PxConeState {
+    float tPrev; // last position known above the surface
+    float t;     // current position
+    float hit;   // exact hit found by a cell solve, or -1
+    bool below;  // the sample at t is at or below the surface
+};
+
+PxConeState pxConeMarch(vec2 uv0, vec2 P) {
+    vec2 X0 = pxCellCoords(uv0);
+    vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
+    float lenP = length(P);
+    PxConeState s;
+    s.t = pxStartT();
+    s.tPrev = s.t;
+    s.hit = -1.0f;
+    s.below = false;
+    for (int i = 0; i < pxMaxSteps; ++i) {
+        vec2 hc = pxConeSample(uv0 + P * s.t);
+        float z = 1.0f - s.t;
+        if (z <= hc.x) {
+            s.below = true;
+            return s;
+        }
+        float coneStep = hc.y * (z - hc.x) / (hc.y + lenP);
+        ivec2 cell = ivec2(pxCellAlong(X0.x + dXY.x * s.t, dXY.x),
+                           pxCellAlong(X0.y + dXY.y * s.t, dXY.y));
+        float tCell = min(min(pxBorderT(cell.x, X0.x, dXY.x), pxBorderT(cell.y, X0.y, dXY.y)), 1.0f);
+        s.tPrev = s.t;
+        if (s.t + coneStep < tCell) {
+            float root = pxSolveCell(cell, X0, dXY, s.t, tCell);
+            if (root >= 0.0f) {
+                s.hit = root;
+                return s;
+            }
+            s.t = max(s.t, tCell);
+        } else {
+            s.t = min(s.t + coneStep, 1.0f);
+        }
+        if (s.t >= 1.0f) {
+            s.below = true; // f(1) >= 0: the bottom is always solid
+            return s;
+        }
+    }
+    return s;
+}

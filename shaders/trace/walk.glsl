@@ -1,0 +1,28 @@
+// A 2-D DDA over the cells the ray crosses for t in [ta, tb], solving each cell's patch exactly.
+// Returns (first root, t reached): root is -1 if there is none in [ta, tb] or the budget ran out.
+
+vec2 pxWalkCells(vec2 X0, vec2 dXY, float ta, float tb, int budget) {
+    float t = ta;
+    ivec2 cell = ivec2(pxCellAlong(X0.x + dXY.x * t, dXY.x), pxCellAlong(X0.y + dXY.y * t, dXY.y));
+    int stepX = dXY.x > 0.0f ? 1 : -1;
+    int stepY = dXY.y > 0.0f ? 1 : -1;
+    float nextX = pxBorderT(cell.x, X0.x, dXY.x);
+    float nextY = pxBorderT(cell.y, X0.y, dXY.y);
+    for (int i = 0; i < budget; ++i) {
+        float tEnd = min(min(nextX, nextY), tb);
+        float root = pxSolveCell(cell, X0, dXY, t, tEnd);
+        if (root >= 0.0f)
+            return vec2(root, root);
+        t = max(t, tEnd);
+        if (tEnd >= tb)
+            return vec2(-1.0f, tb);
+        if (nextX <= nextY) {
+            cell.x += stepX;
+            nextX = pxBorderT(cell.x, X0.x, dXY.x);
+        } else {
+            cell.y += stepY;
+            nextY = pxBorderT(cell.y, X0.y, dXY.y);
+        }
+    }
+    return vec2(-1.0f, t);
+}

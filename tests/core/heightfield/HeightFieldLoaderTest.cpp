@@ -1,0 +1,206 @@
+// Loading height maps: every format keeps its precision; every bad input is a clear error.
+
+#include "parallax/heightfield/HeightFieldLoader.h"
+#include "parallax/image/ImageFile.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+#include <fstream>
+
+using namespace px;
+
+class HeightFieldLoaderTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init() { QVERIFY(m_dir.isValid()); }
+    void formatsKeepPrecision_data();
+    void formatsKeepPrecision();
+    void channelsInvertAndLuminance();
+    void missingFile();
+    void emptyFile();
+    void notAnImage();
+    void truncatedFile();
+    void nonFiniteTexels();
+    void tooLarge();
+    void outOfRangeFloat();
+    void missingChannel();
+
+private:
+    std::string path(const char* name) const { return m_dir.filePath(name).toStdString(); }
+    QTemporaryDir m_dir;
+};
+
+namespace {
+
+Image gradient(int w, int h, int channels) {
+    Image image(w, h, channels);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            for (int c = 0; c < channels; ++c)
+                image.at(x, y, c) = static_cast<float>((x + y * w) % 65536) / 65535.0f;
+        }
+    }
+    return image;
+}
+
+} // namespace
+
+void HeightFieldLoaderTest::formatsKeepPrecision_data() {
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<int>("format");
+    QTest::addColumn<double>("tolerance");
+    QTest::newRow("png8") << "h.png" << int(PixelFormat::UInt8) << 0.5 / 255;
+    QTest::newRow("png16") << "h16.png" << int(PixelFormat::UInt16) << 0.5 / 65535;
+    QTest::newRow("tif16") << "h.tif" << int(PixelFormat::UInt16) << 0.5 / 65535;
+    QTest::newRow("tif float") << "hf.tif" << int(PixelFormat::Float) << 0.0;
+    QTest::newRow("exr float") << "h.exr" << int(PixelFormat::Float) << 0.0;
+    QTest::newRow("bmp") << "h.bmp" << int(PixelFormat::UInt8) << 0.5 / 255;
+    QTest::newRow("tga") << "h.tga" << int(PixelFormat::UInt8) << 0.5 / 255;
+    QTest::newRow("jpeg") << "h.jpg" << int(PixelFormat::UInt8) << 3.0 / 255; // lossy
+}
+
+void HeightFieldLoaderTest::formatsKeepPrecision() {
+    QFETCH(QString, name);
+    QFETCH(int, format);
+    QFETCH(double, tolerance);
+    const std::string file = path(name.toUtf8().constData());
+    const Image source = gradient(300, 3, name.endsWith(".bmp") || name.endsWith(".jpg") ? 3 : 1);
+    ImageWriteOptions options;
+    options.format = static_cast<PixelFormat>(format);
+    const Status written = writeImage(file, source, options);
+    QVERIFY2(written.ok(), written.ok() ? "" : written.error().message.c_str());
+    Result<HeightField> field = loadHeightField(file);
+    QVERIFY2(field.ok(), field.ok() ? "" : field.error().message.c_str());
+    QCOMPARE(field->width, 300);
+    QCOMPARE(field->height, 3);
+    double worst = 0;
+    for (int y = 0; y < 3; ++y) {
+        for (int x = 0; x < 300; ++x)
+            worst = std::max(worst, std::abs(double(field->at(x, y)) - source.at(x, y, 0)));
+    }
+    QVERIFY2(worst <= tolerance + 1e-7, qPrintable(QString("worst error %1").arg(worst)));
+}
+
+void HeightFieldLoaderTest::channelsInvertAndLuminance() {
+    Image rgba(2, 1, 4);
+    const float texel[4] = {0.2f, 0.4f, 0.6f, 0.8f};
+    for (int x = 0; x < 2; ++x) {
+        for (int c = 0; c < 4; ++c)
+            rgba.at(x, 0, c) = texel[c];
+    }
+    const std::string file = path("rgba.exr");
+    ImageWriteOptions options;
+    options.format = PixelFormat::Float;
+    QVERIFY(writeImage(file, rgba, options).ok());
+    HeightLoadOptions load;
+    QCOMPARE(loadHeightField(file, load)->at(0, 0), 0.2f);
+    load.channel = HeightChannel::Green;
+    QCOMPARE(loadHeightField(file, load)->at(0, 0), 0.4f);
+    load.channel = HeightChannel::Alpha;
+    QCOMPARE(loadHeightField(file, load)->at(1, 0), 0.8f);
+    load.invert = true;
+    QCOMPARE(loadHeightField(file, load)->at(1, 0), 1.0f - 0.8f);
+    load.invert = false;
+    load.channel = HeightChannel::Luminance;
+    QVERIFY(std::abs(loadHeightField(file, load)->at(0, 0) - (0.2126f * 0.2f + 0.7152f * 0.4f +
+                                                              0.0722f * 0.6f)) < 1e-6f);
+}
+
+void HeightFieldLoaderTest::missingFile() {
+    const auto r = loadHeightField(path("nothere.png"));
+    QVERIFY(!r.ok());
+    QVERIFY(r.error().message.find("nothere.png") != std::string::npos);
+    QVERIFY(r.error().message.find("no such file") != std::string::npos);
+}
+
+void HeightFieldLoaderTest::emptyFile() {
+    std::ofstream(path("empty.png")).close();
+    const auto r = loadHeightField(path("empty.png"));
+    QVERIFY(!r.ok());
+    QVERIFY(r.error().message.find("empty.png") != std::string::npos);
+    QVERIFY(r.error().message.find("empty") != std::string::npos);
+}
+
+void HeightFieldLoaderTest::notAnImage() {
+    std::ofstream(path("text.png")) << "this is not a PNG file at all\n";
+    const auto r = loadHeightField(path("text.png"));
+    QVERIFY(!r.ok());
+    QVERIFY(r.error().message.find("text.png") != std::string::npos);
+    QVERIFY(r.error().message.find("not a readable image") != std::string::npos);
+}
+
+void HeightFieldLoaderTest::truncatedFile() {
+    const std::string file = path("cut.png");
+    Image noise(256, 256, 1);
+    for (std::size_t i = 0; i < noise.pixels.size(); ++i)
+        noise.pixels[i] = static_cast<float>((i * 2654435761u) % 251) / 250.0f;
+    QVERIFY(writeImage(file, noise, {}).ok());
+    std::ifstream in(file, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), bytes.size() / 2);
+    const auto r = loadHeightField(file);
+    QVERIFY(!r.ok());
+    QVERIFY(r.error().message.find("cut.png") != std::string::npos);
+}
+
+void HeightFieldLoaderTest::nonFiniteTexels() {
+    Image image(5, 4, 1);
+    image.at(3, 1) = std::nanf("");
+    image.at(4, 2) = INFINITY;
+    const std::string file = path("nan.exr");
+    ImageWriteOptions options;
+    options.format = PixelFormat::Float;
+    QVERIFY(writeImage(file, image, options).ok());
+    const auto r = loadHeightField(file);
+    QVERIFY(!r.ok());
+    const std::string& m = r.error().message;
+    QVERIFY2(m.find("nan.exr") != std::string::npos, m.c_str());
+    QVERIFY2(m.find("2 NaN or infinite values") != std::string::npos, m.c_str());
+    QVERIFY2(m.find("(3, 1)") != std::string::npos, m.c_str());
+}
+
+void HeightFieldLoaderTest::tooLarge() {
+    const std::string file = path("wide.png");
+    QVERIFY(writeImage(file, Image(16385, 1, 1), {}).ok());
+    const auto refused = loadHeightField(file);
+    QVERIFY(!refused.ok());
+    QVERIFY(refused.error().message.find("16384") != std::string::npos);
+    HeightLoadOptions allow;
+    allow.allowLarge = true;
+    QVERIFY(loadHeightField(file, allow).ok());
+}
+
+void HeightFieldLoaderTest::outOfRangeFloat() {
+    Image image(3, 1, 1);
+    image.pixels = {-2.0f, 0.5f, 6.0f};
+    const std::string file = path("range.exr");
+    ImageWriteOptions options;
+    options.format = PixelFormat::Float;
+    QVERIFY(writeImage(file, image, options).ok());
+    const auto refused = loadHeightField(file);
+    QVERIFY(!refused.ok());
+    QVERIFY2(refused.error().message.find("[-2, 6]") != std::string::npos,
+             refused.error().message.c_str());
+    HeightLoadOptions normalize;
+    normalize.normalize = true;
+    const auto r = loadHeightField(file, normalize);
+    QVERIFY(r.ok());
+    QCOMPARE(r->at(0, 0), 0.0f);
+    QCOMPARE(r->at(1, 0), 0.3125f);
+    QCOMPARE(r->at(2, 0), 1.0f);
+}
+
+void HeightFieldLoaderTest::missingChannel() {
+    const std::string file = path("grey.png");
+    QVERIFY(writeImage(file, Image(4, 4, 1), {}).ok());
+    HeightLoadOptions options;
+    options.channel = HeightChannel::Blue;
+    const auto r = loadHeightField(file, options);
+    QVERIFY(!r.ok());
+    QVERIFY(r.error().message.find("1 channel") != std::string::npos);
+}
+
+QTEST_APPLESS_MAIN(HeightFieldLoaderTest)
+#include "HeightFieldLoaderTest.moc"

@@ -1,0 +1,162 @@
+// Stiff and extreme inputs: every technique returns finite hits with t in [0, 1] and fetches
+// within its cap, whatever the map, angle or scale (TECHNIQUES.md, numerical pitfalls).
+
+#include "TestSupport.h"
+#include "parallax/sample/ProceduralMaps.h"
+#include "parallax/trace/TraceScene.h"
+
+#include <QtTest>
+#include <cmath>
+
+using namespace px;
+
+class StabilityTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void extremeCases_data();
+    void extremeCases();
+    void scaleZeroCostsOneFetch();
+    void farFromOriginKeepsPrecision();
+    void nonFiniteParallaxIsBounded();
+};
+
+namespace {
+
+// The most fetches a technique may make for a given parameter set (its cap, stated).
+long long fetchCap(Technique t, const TraceParams& p) {
+    switch (t) {
+    case Technique::None:
+    case Technique::Normal:
+        return 0;
+    case Technique::Offset:
+        return 1;
+    case Technique::Steep:
+    case Technique::Pom:
+        return p.maxLayers + 1;
+    case Technique::Relief:
+        return p.maxLayers + 1 + p.binarySteps;
+    case Technique::Secant:
+        return p.maxLayers + 1 + p.secantSteps;
+    case Technique::Cone:
+        return 3LL * p.maxSteps; // a sample and a cell solve per step, then a capped walk
+    case Technique::RelaxedCone:
+        return 2LL * p.maxSteps + p.binarySteps;
+    case Technique::Pyramid:
+        return 2LL * p.maxSteps;
+    case Technique::Exact:
+        return p.maxSteps;
+    }
+    return 0;
+}
+
+struct Case {
+    const char* name;
+    ProceduralMap map;
+    int width, height;
+    float scale;
+    double polar;
+    double azimuth;
+    glm::dvec2 offset;
+};
+
+const Case* s_cases = nullptr;
+
+} // namespace
+
+void StabilityTest::extremeCases_data() {
+    QTest::addColumn<int>("index");
+    QTest::addColumn<int>("wrap");
+    static const Case cases[] = {
+        {"polar 89.9", ProceduralMap::Noise, 32, 32, 0.1f, 89.9, 35, {0, 0}},
+        {"scale 10", ProceduralMap::Noise, 32, 32, 10.0f, 60, 35, {0, 0}},
+        {"scale 10 grazing", ProceduralMap::Noise, 16, 16, 10.0f, 89.9, 10, {0, 0}},
+        {"tiny scale", ProceduralMap::Noise, 32, 32, 1e-6f, 80, 35, {0, 0}},
+        {"1x1", ProceduralMap::Random, 1, 1, 0.1f, 70, 35, {0, 0}},
+        {"1xN", ProceduralMap::Random, 1, 37, 0.1f, 70, 80, {0, 0}},
+        {"Nx1", ProceduralMap::Random, 29, 1, 0.1f, 70, 10, {0, 0}},
+        {"checkerboard", ProceduralMap::Checker, 32, 32, 0.1f, 80, 35, {0, 0}},
+        {"spikes", ProceduralMap::Spikes, 64, 64, 0.1f, 85, 35, {0, 0}},
+        {"step", ProceduralMap::Step, 32, 32, 0.2f, 87, 0, {0, 0}},
+        {"cracks", ProceduralMap::Cracks, 64, 64, 0.1f, 80, 0, {0, 0}},
+        {"flat 0", ProceduralMap::Flat, 8, 8, 0.1f, 60, 35, {0, 0}},
+        {"uv0 near 4096", ProceduralMap::Noise, 32, 32, 0.1f, 60, 35, {4096.0, 4095.0}},
+        {"non power of two", ProceduralMap::Random, 23, 17, 0.3f, 85, 120, {0, 0}},
+    };
+    for (int wrap = 0; wrap < 2; ++wrap) {
+        for (int i = 0; i < static_cast<int>(std::size(cases)); ++i) {
+            const QByteArray name = QByteArray(cases[i].name) + (wrap ? " clamp" : " repeat");
+            QTest::newRow(name.constData()) << i << wrap;
+        }
+    }
+    s_cases = cases;
+}
+
+void StabilityTest::extremeCases() {
+    QFETCH(int, index);
+    QFETCH(int, wrap);
+    const Case& c = s_cases[index];
+    const WrapMode mode = wrap ? WrapMode::Clamp : WrapMode::Repeat;
+    const HeightField field = makeProceduralMap(c.map, c.width, c.height, 5, 0.0f);
+    TraceScene scene;
+    scene.rays = 16;
+    scene.polarDeg = c.polar;
+    scene.azimuthDeg = c.azimuth;
+    scene.uvOffset = c.offset;
+    for (const TechniqueInfo& ti : allTechniques()) {
+        auto tracer = test::makeTracer(field, mode, ti.id, c.scale);
+        QVERIFY(tracer.ok());
+        const long long cap = fetchCap(ti.id, ti.defaults);
+        for (const TraceResult& r : traceScene(*tracer, scene)) {
+            QVERIFY2(std::isfinite(r.u) && std::isfinite(r.v) && std::isfinite(r.t),
+                     ti.name.data());
+            QVERIFY2(r.t >= 0.0f && r.t <= 1.0f, ti.name.data());
+            QVERIFY2(r.fetches >= 0 && r.fetches <= cap,
+                     qPrintable(QString("%1: %2 fetches, cap %3")
+                                    .arg(ti.name.data()).arg(r.fetches).arg(cap)));
+        }
+    }
+}
+
+void StabilityTest::scaleZeroCostsOneFetch() {
+    const HeightField field = makeProceduralMap(ProceduralMap::Noise, 16, 16);
+    for (const TechniqueInfo& ti : allTechniques()) {
+        auto tracer = test::makeTracer(field, WrapMode::Repeat, ti.id, 0.0f);
+        QVERIFY(tracer.ok());
+        const TraceResult r = tracer->trace({0.3, 0.6}, parallaxVector(0.0f, 80, 35));
+        QCOMPARE(r.fetches, ti.parallax ? 1 : 0);
+        QCOMPARE(r.u, 0.3);
+        QCOMPARE(r.v, 0.6);
+    }
+}
+
+// uv0 = 4096.3 in float is 4096.2998: a texel of 1024 is 0.00098, so the hit must still agree with
+// the same ray traced at 0.3 to well under a texel.
+void StabilityTest::farFromOriginKeepsPrecision() {
+    const HeightField field = makeProceduralMap(ProceduralMap::Noise, 1024, 1024);
+    auto tracer = test::makeTracer(field, WrapMode::Repeat, Technique::Pyramid, 0.05f);
+    QVERIFY(tracer.ok());
+    const glm::vec2 P = parallaxVector(0.05f, 70, 35);
+    const TraceResult nearOrigin = tracer->trace({0.3, 0.7}, P);
+    const TraceResult far = tracer->trace({4096.3, 4095.7}, P);
+    QVERIFY(std::abs((far.u - 4096.0) - nearOrigin.u) * 1024 < 0.01);
+    QVERIFY(std::abs((far.v - 4095.0) - nearOrigin.v) * 1024 < 0.01);
+    QCOMPARE(far.fetches, nearOrigin.fetches);
+}
+
+void StabilityTest::nonFiniteParallaxIsBounded() {
+    const HeightField field = makeProceduralMap(ProceduralMap::Noise, 16, 16);
+    for (const TechniqueInfo& ti : allTechniques()) {
+        auto tracer = test::makeTracer(field, WrapMode::Repeat, ti.id, 0.1f);
+        QVERIFY(tracer.ok());
+        for (glm::vec2 P : {glm::vec2(std::nanf(""), 0.0f), glm::vec2(INFINITY, -INFINITY),
+                            glm::vec2(1e30f, 1e-30f)}) {
+            const TraceResult r = tracer->trace({0.5, 0.5}, P);
+            QVERIFY2(std::isfinite(r.u) && std::isfinite(r.v) && r.t >= 0 && r.t <= 1,
+                     ti.name.data());
+        }
+    }
+}
+
+QTEST_APPLESS_MAIN(StabilityTest)
+#include "StabilityTest.moc"

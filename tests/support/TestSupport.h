@@ -1,0 +1,27 @@
+#pragma once
+// Small helpers every test suite shares.
+
+#include "parallax/heightfield/HeightField.h"
+#include "parallax/trace/Tracer.h"
+
+#include <string>
+
+namespace px::test {
+
+// A file under ../shared/testdata/ (third-party images, conformance tests only).
+std::string sharedTestData(const std::string& relative);
+
+// Traces one ray; QFAILs (through the caller's QVERIFY) if the tracer cannot be created.
+Result<Tracer> makeTracer(const HeightField& field, WrapMode wrap, Technique technique,
+                          float scale, const TraceParams* params = nullptr);
+
+// The hit of the ray uv(t) = uv0 + P t found by a dense march in double precision with bisection
+// at every sign change: an oracle written independently of the kernels. `samples` steps over the
+// whole [0, 1].
+double denseMarchT(const HeightField& field, WrapMode wrap, double u0, double v0, double px,
+                   double py, int samples);
+
+// Bilinear height in double precision, wrap or clamp.
+double bilinearHeight(const HeightField& field, WrapMode wrap, double u, double v);
+
+} // namespace px::test
