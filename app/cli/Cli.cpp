@@ -29,6 +29,7 @@ int run(int argc, char** argv) {
         Action action = registrar(app);
         entries.push_back({app.get_subcommands({}).at(before), std::move(action)});
     };
+    add(addSampleCommand);
     add(addTraceCommand);
 
     try {

@@ -5,6 +5,7 @@
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/trace/TraceScene.h"
 
+#include <iostream>
 #include <memory>
 #include <optional>
 
@@ -62,7 +63,12 @@ int runTrace(const TraceOptions& o) {
         return fail(tracer.error().message);
 
     const std::vector<TraceResult> results = traceScene(*tracer, scene);
-    if (Status s = writeTextFile(o.out, traceCsv(scene, results)); !s)
+    const std::string csv = traceCsv(scene, results);
+    if (o.out == "-") {
+        std::cout << csv;
+        return 0;
+    }
+    if (Status s = writeTextFile(o.out, csv); !s)
         return fail(s.error().message);
     return 0;
 }
@@ -93,7 +99,7 @@ Action addTraceCommand(CLI::App& app) {
         ->check(CLI::Range(0, kMaxRefineLimit));
     cmd->add_option("--max-steps", o->maxSteps, "Cap on cone steps, cells or pyramid nodes")
         ->check(CLI::Range(1, kMaxStepsLimit));
-    cmd->add_option("--out", o->out, "Output CSV (i,j,u,v,t,fetches)")->required();
+    cmd->add_option("--out", o->out, "Output CSV (i,j,u,v,t,fetches); - for standard output")->required();
     return [o] { return runTrace(*o); };
 }
 

@@ -49,7 +49,10 @@ float pxTracePyramid(vec2 uv0, vec2 P) {
     vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
     float t = pxStartT();
     ivec2 cell = ivec2(pxCellAlong(X0.x + dXY.x * t, dXY.x), pxCellAlong(X0.y + dXY.y * t, dXY.y));
-    int level = pxMaxMipTop;
+    // Start at the level whose nodes are about as wide as the whole ray's footprint: any level is
+    // correct, and short rays need not descend from the top.
+    float span = max(abs(dXY.x), abs(dXY.y)) * (1.0f - t);
+    int level = min(pxMaxMipTop, int(ceil(log2(max(span, 1.0f)))));
     for (int i = 0; i < pxMaxSteps; ++i) {
         vec2 spanX = pxNodeSpan(cell.x, level, pxMapSize.x);
         vec2 spanY = pxNodeSpan(cell.y, level, pxMapSize.y);
@@ -83,8 +86,12 @@ float pxTracePyramid(vec2 uv0, vec2 P) {
             next.x = dXY.x > 0.0f ? int(spanX.y) : int(spanX.x) - 1;
         if (exitY <= exitX)
             next.y = dXY.y > 0.0f ? int(spanY.y) : int(spanY.x) - 1;
+        // Go up only into a new parent: the old parent's box is already known to be entered.
+        ivec2 before = node >> 1;
+        ivec2 after = ivec2(pxNodeOf(next.x, level, pxMapSize.x), pxNodeOf(next.y, level, pxMapSize.y)) >> 1;
         cell = next;
-        level = min(level + 1, pxMaxMipTop);
+        if (before != after)
+            level = min(level + 1, pxMaxMipTop);
     }
     return t; // the cap ran out: the ray is still above the surface here
 }

@@ -140,9 +140,8 @@ TraceResult Tracer::trace(glm::dvec2 uv0, glm::vec2 rawP) const {
     if (t > 1.0f)
         t = 1.0f;
     TraceResult r;
-    const glm::vec2 hitLocal = local + P * t;
-    r.u = base.x + static_cast<double>(hitLocal.x);
-    r.v = base.y + static_cast<double>(hitLocal.y);
+    r.u = uv0.x + static_cast<double>(P.x) * t;
+    r.v = uv0.y + static_cast<double>(P.y) * t;
     r.t = t;
     r.fetches = k.pxFetches;
     return r;

@@ -90,6 +90,7 @@ void ExactTraceTest::flatMaps() {
         const TraceResult t = top->trace({0.3, 0.7}, P);
         QCOMPARE(t.t, 0.0f);
         QCOMPARE(t.u, 0.3);
+        QCOMPARE(t.v, 0.7);
     }
 }
 

@@ -90,7 +90,7 @@ void PyramidTraceTest::visitsFewerCells() {
     QVERIFY(exact.ok() && pyramid.ok());
     TraceScene scene;
     scene.rays = 32;
-    scene.polarDeg = 80;
+    scene.polarDeg = 87;
     scene.azimuthDeg = 35;
     long long exactFetches = 0, pyramidFetches = 0;
     for (const TraceResult& r : traceScene(*exact, scene))
