@@ -1,0 +1,68 @@
+#pragma once
+// A material: which maps, how to read them, and how to render them. Materials are data; the
+// shader variant, the bakes and the exports are derived from them (STYLE.md, "variants as data").
+// The JSON form ("format": "parallax-studio-material", "version": 1) lives in MaterialFile.h.
+
+#include "parallax/heightfield/HeightFieldLoader.h"
+#include "parallax/heightfield/WrapMode.h"
+#include "parallax/trace/Technique.h"
+
+#include <string>
+
+namespace px {
+
+// Where the shading normal comes from.
+enum class NormalSource {
+    None,          // the polygon's normal
+    Map,           // the material's normal map
+    HeightCentral, // derived from height in the shader: 4-tap central differences
+    HeightSobel,   // derived from height in the shader: 3x3 Sobel
+};
+
+// Green channel convention of a normal map (CONVENTIONS §3).
+enum class NormalGreen {
+    OpenGL,  // Y+ (glTF, Godot, Unity, Blender)
+    DirectX, // Y- (Unreal)
+};
+
+enum class LightingModel { BlinnPhong, MetallicRoughness };
+
+struct MaterialMaps {
+    // Paths as written in the file: relative to the material file's folder, or absolute.
+    // Empty means absent.
+    std::string albedo;      // sRGB
+    std::string height;      // linear; a depth map if heightIsDepth
+    std::string normal;      // linear, tangent space, green as normalGreen says
+    std::string cone;        // R = height, G = sqrt(conservative cone ratio)
+    std::string relaxedCone; // R = height, G = sqrt(relaxed cone ratio)
+    std::string ao;
+    std::string roughness;
+    std::string metallic;
+};
+
+struct Material {
+    std::string name = "untitled";
+    MaterialMaps maps;
+    HeightChannel heightChannel = HeightChannel::Red;
+    bool heightIsDepth = false; // white = deep: loaded inverted
+    float heightScale = 0.05f;  // s, uv units (CONVENTIONS §2)
+    WrapMode wrap = WrapMode::Repeat;
+    float tiling = 1.0f; // uv repeats across a mesh
+
+    Technique technique = Technique::Pom;
+    TraceParams params = info(Technique::Pom).defaults;
+
+    NormalSource normalSource = NormalSource::HeightCentral;
+    NormalGreen normalGreen = NormalGreen::OpenGL;
+
+    bool selfShadow = false;
+    float shadowSoftness = 0.5f; // 0 hard .. 1 very soft
+
+    LightingModel lighting = LightingModel::BlinnPhong;
+    float roughness = 0.6f; // used where there is no roughness map
+    float metallic = 0.0f;  // used where there is no metallic map
+    float specular = 0.3f;  // Blinn-Phong specular strength
+    float shininess = 32.0f;
+};
+
+} // namespace px

@@ -1,0 +1,4 @@
+# Sources of the core's image area.
+target_sources(parallax-core PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/ImageFile.cpp
+)
