@@ -27,7 +27,8 @@ PxConeState pxConeMarch(vec2 uv0, vec2 P) {
             s.below = true;
             return s;
         }
-        float coneStep = hc.y * (z - hc.x) / (hc.y + lenP);
+        float spread = hc.y + lenP; // 0 only for a zero cone seen straight down
+        float coneStep = spread > 0.0f ? hc.y * (z - hc.x) / spread : 0.0f;
         ivec2 cell = ivec2(pxCellAlong(X0.x + dXY.x * s.t, dXY.x),
                            pxCellAlong(X0.y + dXY.y * s.t, dXY.y));
         float tCell = min(min(pxBorderT(cell.x, X0.x, dXY.x), pxBorderT(cell.y, X0.y, dXY.y)), 1.0f);
