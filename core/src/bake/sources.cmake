@@ -1,5 +1,6 @@
 # Sources of the core's bake area.
 target_sources(parallax-core PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/BakeControl.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MaxMipPyramid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ConeMapReference.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ConeMapBaker.cpp
