@@ -1,0 +1,71 @@
+// Loading and saving material files, and the paths of their maps.
+
+#include "parallax/material/MaterialFile.h"
+
+#include "parallax/io/AtomicWrite.h"
+
+#include <filesystem>
+
+namespace px {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A material file is a few hundred bytes; anything far larger is not one.
+constexpr std::uintmax_t kMaxMaterialFileBytes = 1 << 20;
+
+} // namespace
+
+Result<Material> loadMaterial(const std::string& path) {
+    std::error_code ec;
+    if (const std::uintmax_t size = fs::file_size(path, ec); !ec && size > kMaxMaterialFileBytes)
+        return fileError(path, "the file is " + std::to_string(size) +
+                                   " bytes, too large for a material file (limit 1 MiB)");
+    Result<std::string> text = readTextFile(path);
+    if (!text)
+        return text.error();
+    return parseMaterial(*text, path);
+}
+
+Status saveMaterial(const Material& material, const std::string& path) {
+    if (std::vector<MaterialProblem> problems = validateMaterial(material); !problems.empty())
+        return Error{formatProblems(problems, path)};
+    return writeTextFile(path, materialToJson(material));
+}
+
+std::string resolveMapPath(const std::string& materialFile, const std::string& mapPath) {
+    if (mapPath.empty())
+        return {};
+    const fs::path map(mapPath);
+    if (map.is_absolute())
+        return map.lexically_normal().string();
+    return (fs::path(materialFile).parent_path() / map).lexically_normal().string();
+}
+
+MaterialMaps rebaseMapPaths(const MaterialMaps& maps, const std::string& fromFile,
+                            const std::string& toFile) {
+    std::error_code ec;
+    const fs::path toDir = fs::weakly_canonical(fs::absolute(toFile, ec).parent_path(), ec);
+    auto rebase = [&](const std::string& path) -> std::string {
+        if (path.empty() || fs::path(path).is_absolute())
+            return path;
+        std::error_code e;
+        const fs::path file =
+            fs::weakly_canonical(fs::absolute(resolveMapPath(fromFile, path), e), e);
+        const fs::path relative = file.lexically_relative(toDir);
+        return relative.empty() ? file.generic_string() : relative.generic_string();
+    };
+    MaterialMaps out;
+    out.albedo = rebase(maps.albedo);
+    out.height = rebase(maps.height);
+    out.normal = rebase(maps.normal);
+    out.cone = rebase(maps.cone);
+    out.relaxedCone = rebase(maps.relaxedCone);
+    out.ao = rebase(maps.ao);
+    out.roughness = rebase(maps.roughness);
+    out.metallic = rebase(maps.metallic);
+    return out;
+}
+
+} // namespace px

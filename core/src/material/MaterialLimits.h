@@ -1,0 +1,28 @@
+#pragma once
+// The ranges the material file accepts, shared by the JSON reader (type errors name the range)
+// and validateMaterial (range errors on materials built in memory), so both say the same thing.
+
+#include "parallax/trace/Technique.h"
+
+namespace px::material {
+
+struct NumberRange {
+    double lo;
+    double hi;
+};
+
+inline constexpr NumberRange kHeightScale{0.0, 100.0};
+inline constexpr NumberRange kTiling{0.001, 10000.0};
+inline constexpr NumberRange kUnit{0.0, 1.0}; // softness, roughness, metallic, specular
+inline constexpr NumberRange kShininess{1.0, 10000.0};
+
+struct IntRange {
+    int lo;
+    int hi;
+};
+
+inline constexpr IntRange kLayers{1, kMaxLayersLimit};
+inline constexpr IntRange kRefine{0, kMaxRefineLimit};
+inline constexpr IntRange kSteps{1, kMaxStepsLimit};
+
+} // namespace px::material
