@@ -3,7 +3,8 @@
 namespace px::cli {
 
 void HeightOptions::addTo(CLI::App& command, bool required) {
-    auto* height = command.add_option("--height", file, "Height map (PNG, TIFF, EXR, BMP, JPEG, TGA)");
+    auto* height =
+        command.add_option("--height", file, "Height map (PNG, TIFF, EXR, BMP, JPEG, TGA)");
     if (required)
         height->required();
     command.add_flag("--invert", invert, "The file is a depth map (white = deep)");
@@ -15,7 +16,9 @@ void HeightOptions::addTo(CLI::App& command, bool required) {
         ->check(CLI::IsMember({"repeat", "clamp"}));
 }
 
-WrapMode HeightOptions::wrapMode() const { return parseWrapMode(wrap).value_or(WrapMode::Repeat); }
+WrapMode HeightOptions::wrapMode() const {
+    return parseWrapMode(wrap).value_or(WrapMode::Repeat);
+}
 
 Result<HeightField> HeightOptions::load() const {
     HeightLoadOptions options;

@@ -99,7 +99,8 @@ Action addTraceCommand(CLI::App& app) {
         ->check(CLI::Range(0, kMaxRefineLimit));
     cmd->add_option("--max-steps", o->maxSteps, "Cap on cone steps, cells or pyramid nodes")
         ->check(CLI::Range(1, kMaxStepsLimit));
-    cmd->add_option("--out", o->out, "Output CSV (i,j,u,v,t,fetches); - for standard output")->required();
+    cmd->add_option("--out", o->out, "Output CSV (i,j,u,v,t,fetches); - for standard output")
+        ->required();
     return [o] { return runTrace(*o); };
 }
 

@@ -31,7 +31,9 @@ double bilinearHeight(const HeightField& field, WrapMode wrap, double u, double 
 
 double denseMarchT(const HeightField& field, WrapMode wrap, double u0, double v0, double px,
                    double py, int samples) {
-    auto f = [&](double t) { return bilinearHeight(field, wrap, u0 + px * t, v0 + py * t) - (1 - t); };
+    auto f = [&](double t) {
+        return bilinearHeight(field, wrap, u0 + px * t, v0 + py * t) - (1 - t);
+    };
     double prevT = 0.0, prevF = f(0.0);
     if (prevF >= 0)
         return 0.0;

@@ -12,8 +12,8 @@ namespace px::test {
 std::string sharedTestData(const std::string& relative);
 
 // Traces one ray; QFAILs (through the caller's QVERIFY) if the tracer cannot be created.
-Result<Tracer> makeTracer(const HeightField& field, WrapMode wrap, Technique technique,
-                          float scale, const TraceParams* params = nullptr);
+Result<Tracer> makeTracer(const HeightField& field, WrapMode wrap, Technique technique, float scale,
+                          const TraceParams* params = nullptr);
 
 // The hit of the ray uv(t) = uv0 + P t found by a dense march in double precision with bisection
 // at every sign change: an oracle written independently of the kernels. `samples` steps over the

@@ -56,6 +56,8 @@ private:
 // For calls that produce nothing but can fail.
 struct Done {};
 using Status = Result<Done>;
-inline Status success() { return Done{}; }
+inline Status success() {
+    return Done{};
+}
 
 } // namespace px

@@ -3,7 +3,6 @@
 #include "parallax/io/AtomicWrite.h"
 
 #include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>

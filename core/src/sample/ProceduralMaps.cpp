@@ -9,7 +9,7 @@
 namespace px {
 namespace {
 
-constexpr std::array<std::string_view, 11> kNames{"bricks", "stones", "rivets", "noise",
+constexpr std::array<std::string_view, 11> kNames{"bricks", "stones", "rivets",  "noise",
                                                   "random", "ramp",   "checker", "spikes",
                                                   "step",   "cracks", "flat"};
 
@@ -23,7 +23,9 @@ float hash01(int x, int y, unsigned seed) {
     return static_cast<float>(h & 0xffffffu) / static_cast<float>(0x1000000);
 }
 
-float smooth(float t) { return t * t * (3.0f - 2.0f * t); }
+float smooth(float t) {
+    return t * t * (3.0f - 2.0f * t);
+}
 
 // Periodic value noise with `cells` lattice cells across the tile, so samples tile seamlessly.
 float valueNoise(float u, float v, int cells, unsigned seed) {
@@ -84,7 +86,8 @@ float stones(float u, float v, unsigned seed) {
         }
     }
     const float border = std::clamp((d2 - d1) * 2.5f, 0.0f, 1.0f);
-    return std::clamp(std::sqrt(border) * (0.85f + 0.15f * fractalNoise(u, v, seed + 3)), 0.0f, 1.0f);
+    return std::clamp(std::sqrt(border) * (0.85f + 0.15f * fractalNoise(u, v, seed + 3)), 0.0f,
+                      1.0f);
 }
 
 float rivets(float u, float v) {
@@ -98,7 +101,9 @@ float rivets(float u, float v) {
 
 } // namespace
 
-std::span<const std::string_view> proceduralMapNames() { return kNames; }
+std::span<const std::string_view> proceduralMapNames() {
+    return kNames;
+}
 
 std::optional<ProceduralMap> parseProceduralMap(std::string_view name) {
     for (std::size_t i = 0; i < kNames.size(); ++i) {
@@ -108,7 +113,8 @@ std::optional<ProceduralMap> parseProceduralMap(std::string_view name) {
     return std::nullopt;
 }
 
-HeightField makeProceduralMap(ProceduralMap kind, int width, int height, unsigned seed, float level) {
+HeightField makeProceduralMap(ProceduralMap kind, int width, int height, unsigned seed,
+                              float level) {
     HeightField field(width, height);
     std::mt19937 random(seed);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);

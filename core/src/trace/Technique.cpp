@@ -38,7 +38,9 @@ constexpr std::array kTechniques{
 
 } // namespace
 
-std::span<const TechniqueInfo> allTechniques() { return kTechniques; }
+std::span<const TechniqueInfo> allTechniques() {
+    return kTechniques;
+}
 
 const TechniqueInfo& info(Technique technique) {
     for (const TechniqueInfo& t : kTechniques) {

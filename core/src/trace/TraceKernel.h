@@ -33,22 +33,24 @@ struct TraceKernel {
     const MaxMipPyramid* pyramid = nullptr;
 
     float pxHeightTexel(ivec2 i) const { return heightField->at(i.x, i.y); }
-    vec2 pxConeTexel(ivec2 i) const { return vec2(heightField->at(i.x, i.y), coneMap->g(i.x, i.y)); }
+    vec2 pxConeTexel(ivec2 i) const {
+        return vec2(heightField->at(i.x, i.y), coneMap->g(i.x, i.y));
+    }
     float pxMaxMipNode(int level, ivec2 n) const { return pyramid->at(level, n.x, n.y); }
 
 #include "trace/common.glsl"
-#include "trace/walk.glsl"
-#include "trace/exact.glsl"
-#include "trace/offset.glsl"
-#include "trace/march.glsl"
-#include "trace/steep.glsl"
-#include "trace/pom.glsl"
-#include "trace/relief.glsl"
-#include "trace/secant.glsl"
 #include "trace/cone.glsl"
 #include "trace/cone_conservative.glsl"
 #include "trace/cone_relaxed.glsl"
+#include "trace/exact.glsl"
+#include "trace/march.glsl"
+#include "trace/offset.glsl"
+#include "trace/pom.glsl"
 #include "trace/pyramid.glsl"
+#include "trace/relief.glsl"
+#include "trace/secant.glsl"
+#include "trace/steep.glsl"
+#include "trace/walk.glsl"
 };
 // NOLINTEND
 

@@ -1,10 +1,9 @@
 #include "parallax/trace/TraceScene.h"
 
-#include <tbb/parallel_for.h>
-
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <tbb/parallel_for.h>
 
 namespace px {
 

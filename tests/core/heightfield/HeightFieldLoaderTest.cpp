@@ -1,6 +1,7 @@
 // Loading height maps: every format keeps its precision; every bad input is a clear error.
 
 #include "parallax/heightfield/HeightFieldLoader.h"
+
 #include "parallax/image/ImageFile.h"
 
 #include <QTemporaryDir>
@@ -104,8 +105,8 @@ void HeightFieldLoaderTest::channelsInvertAndLuminance() {
     QCOMPARE(loadHeightField(file, load)->at(1, 0), 1.0f - 0.8f);
     load.invert = false;
     load.channel = HeightChannel::Luminance;
-    QVERIFY(std::abs(loadHeightField(file, load)->at(0, 0) - (0.2126f * 0.2f + 0.7152f * 0.4f +
-                                                              0.0722f * 0.6f)) < 1e-6f);
+    QVERIFY(std::abs(loadHeightField(file, load)->at(0, 0) -
+                     (0.2126f * 0.2f + 0.7152f * 0.4f + 0.0722f * 0.6f)) < 1e-6f);
 }
 
 void HeightFieldLoaderTest::missingFile() {

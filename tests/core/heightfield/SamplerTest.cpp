@@ -1,7 +1,8 @@
 // The bilinear sampler: texel centres, midpoints, wrap and clamp at the edges, fetch counting.
 
-#include "TestSupport.h"
 #include "parallax/heightfield/Sampler.h"
+
+#include "TestSupport.h"
 #include "parallax/sample/ProceduralMaps.h"
 
 #include <QtTest>

@@ -1,6 +1,7 @@
 // Image writes are atomic: a failure leaves neither half a file nor a changed target.
 
 #include "parallax/image/ImageFile.h"
+
 #include "parallax/io/AtomicWrite.h"
 
 #include <QDir>
@@ -63,8 +64,9 @@ void ImageFileTest::missingFolderIsAnError() {
 
 void ImageFileTest::noTemporaryFilesRemain() {
     QTemporaryDir dir;
-    QVERIFY(writeImage(dir.filePath("a.exr").toStdString(), Image(2, 2, 3),
-                       {PixelFormat::Half, false}).ok());
+    QVERIFY(
+        writeImage(dir.filePath("a.exr").toStdString(), Image(2, 2, 3), {PixelFormat::Half, false})
+            .ok());
     QVERIFY(writeTextFile(dir.filePath("b.csv").toStdString(), "x\n").ok());
     const QStringList files = QDir(dir.path()).entryList(QDir::Files | QDir::Hidden);
     QCOMPARE(files, QStringList({"a.exr", "b.csv"}));

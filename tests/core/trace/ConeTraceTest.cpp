@@ -25,7 +25,8 @@ void ConeTraceTest::coneIsNearlyExact_data() {
     QTest::addColumn<int>("wrap");
     for (ProceduralMap m : {ProceduralMap::Noise, ProceduralMap::Random, ProceduralMap::Spikes}) {
         for (int wrap = 0; wrap < 2; ++wrap) {
-            const QByteArray name = QByteArray::number(static_cast<int>(m)) + (wrap ? " clamp" : " repeat");
+            const QByteArray name =
+                QByteArray::number(static_cast<int>(m)) + (wrap ? " clamp" : " repeat");
             QTest::newRow(name.constData()) << static_cast<int>(m) << wrap;
         }
     }

@@ -43,7 +43,8 @@ void addCases(std::initializer_list<Technique> techniques) {
                 const QByteArray name = QByteArray(info(t).name.data()) + " map " +
                                         QByteArray::number(static_cast<int>(m)) + " polar " +
                                         QByteArray::number(polar);
-                QTest::newRow(name.constData()) << static_cast<int>(t) << static_cast<int>(m) << polar;
+                QTest::newRow(name.constData())
+                    << static_cast<int>(t) << static_cast<int>(m) << polar;
             }
         }
     }
@@ -77,8 +78,10 @@ void ConvergenceTest::moreLayersNeverWorse() {
         const double error = meanError(field, t, params, reference, scene, scale);
         QVERIFY(error >= 0);
         // 1e-5 texel: float rounding once the error has converged.
-        QVERIFY2(error <= previous + 1e-5,
-                 qPrintable(QString("%1 layers: mean error %2 > %3").arg(layers).arg(error).arg(previous)));
+        QVERIFY2(
+            error <= previous + 1e-5,
+            qPrintable(
+                QString("%1 layers: mean error %2 > %3").arg(layers).arg(error).arg(previous)));
         previous = error;
     }
     // At worst one layer's travel: |P| W / layers texels.
@@ -112,7 +115,8 @@ void ConvergenceTest::moreRefinementNeverWorse() {
         params.binarySteps = params.secantSteps = steps;
         const double error = meanError(field, t, params, reference, scene, scale);
         QVERIFY2(error <= previous + 1e-5,
-                 qPrintable(QString("%1 steps: mean error %2 > %3").arg(steps).arg(error).arg(previous)));
+                 qPrintable(
+                     QString("%1 steps: mean error %2 > %3").arg(steps).arg(error).arg(previous)));
         previous = error;
     }
 }

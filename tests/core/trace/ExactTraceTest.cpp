@@ -69,7 +69,10 @@ void ExactTraceTest::agreesWithDenseMarch() {
                 test::bilinearHeight(field, mode, uv0.x + P.x * r.t, uv0.y + P.y * r.t) - (1 - r.t);
             QVERIFY2(r.t < oracle && std::abs(fAtExact) < 1e-5,
                      qPrintable(QString("ray %1,%2: exact t %3, dense march t %4")
-                                    .arg(i).arg(j).arg(r.t, 0, 'g', 9).arg(oracle, 0, 'g', 9)));
+                                    .arg(i)
+                                    .arg(j)
+                                    .arg(r.t, 0, 'g', 9)
+                                    .arg(oracle, 0, 'g', 9)));
             ++tangent;
         }
     }
@@ -110,7 +113,9 @@ void ExactTraceTest::linearRamp() {
             QVERIFY2(std::abs(r.t - expected) < 2e-5,
                      qPrintable(QString("%1 azimuth %2: t %3, expected %4")
                                     .arg(QString::fromUtf8(info(technique).name.data()))
-                                    .arg(azimuth).arg(r.t, 0, 'g', 9).arg(expected, 0, 'g', 9)));
+                                    .arg(azimuth)
+                                    .arg(r.t, 0, 'g', 9)
+                                    .arg(expected, 0, 'g', 9)));
         }
     }
 }

@@ -55,8 +55,13 @@ void PyramidTraceTest::matchesExact() {
                     QVERIFY2(error <= 0.01,
                              qPrintable(QString("scale %1 polar %2 azimuth %3 ray %4: %5 texels "
                                                 "(t %6 vs %7)")
-                                            .arg(scale).arg(polar).arg(azimuth).arg(k)
-                                            .arg(error).arg(a[k].t).arg(b[k].t)));
+                                            .arg(scale)
+                                            .arg(polar)
+                                            .arg(azimuth)
+                                            .arg(k)
+                                            .arg(error)
+                                            .arg(a[k].t)
+                                            .arg(b[k].t)));
                 }
             }
         }
@@ -71,13 +76,18 @@ void PyramidTraceTest::boundaryRays() {
         auto pyramid = test::makeTracer(field, mode, Technique::Pyramid, 0.2f);
         QVERIFY(exact.ok() && pyramid.ok());
         for (double u : {0.0, 0.5 / 16, 1.0 / 16, 0.5, 8.5 / 16, 1.0}) {
-            for (glm::vec2 P : {glm::vec2(0.3f, 0.0f), glm::vec2(0.0f, -0.3f), glm::vec2(-0.5f, 0.0f),
-                                glm::vec2(0.25f, 0.25f), glm::vec2(-1.0f, 2.0f)}) {
+            for (glm::vec2 P :
+                 {glm::vec2(0.3f, 0.0f), glm::vec2(0.0f, -0.3f), glm::vec2(-0.5f, 0.0f),
+                  glm::vec2(0.25f, 0.25f), glm::vec2(-1.0f, 2.0f)}) {
                 const TraceResult a = exact->trace({u, 0.5 / 16}, P);
                 const TraceResult b = pyramid->trace({u, 0.5 / 16}, P);
                 QVERIFY2(hitErrorTexels(a, b, 16, 16) <= 0.01,
                          qPrintable(QString("u %1 P (%2, %3): t %4 vs %5")
-                                        .arg(u).arg(P.x).arg(P.y).arg(a.t).arg(b.t)));
+                                        .arg(u)
+                                        .arg(P.x)
+                                        .arg(P.y)
+                                        .arg(a.t)
+                                        .arg(b.t)));
             }
         }
     }
@@ -97,8 +107,9 @@ void PyramidTraceTest::visitsFewerCells() {
         exactFetches += r.fetches;
     for (const TraceResult& r : traceScene(*pyramid, scene))
         pyramidFetches += r.fetches;
-    QVERIFY2(pyramidFetches * 2 < exactFetches,
-             qPrintable(QString("pyramid %1 fetches, exact %2").arg(pyramidFetches).arg(exactFetches)));
+    QVERIFY2(
+        pyramidFetches * 2 < exactFetches,
+        qPrintable(QString("pyramid %1 fetches, exact %2").arg(pyramidFetches).arg(exactFetches)));
 }
 
 QTEST_APPLESS_MAIN(PyramidTraceTest)

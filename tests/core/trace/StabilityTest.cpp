@@ -111,9 +111,10 @@ void StabilityTest::extremeCases() {
             QVERIFY2(std::isfinite(r.u) && std::isfinite(r.v) && std::isfinite(r.t),
                      ti.name.data());
             QVERIFY2(r.t >= 0.0f && r.t <= 1.0f, ti.name.data());
-            QVERIFY2(r.fetches >= 0 && r.fetches <= cap,
-                     qPrintable(QString("%1: %2 fetches, cap %3")
-                                    .arg(ti.name.data()).arg(r.fetches).arg(cap)));
+            QVERIFY2(
+                r.fetches >= 0 && r.fetches <= cap,
+                qPrintable(
+                    QString("%1: %2 fetches, cap %3").arg(ti.name.data()).arg(r.fetches).arg(cap)));
         }
     }
 }

@@ -18,7 +18,8 @@ struct HeightLoadOptions {
     HeightChannel channel = HeightChannel::Red; // grey images have only one channel: that one
     bool invert = false;                        // depth map (white = deep): h = 1 - value
     bool allowLarge = false;                    // sides over 16384 are refused otherwise
-    bool normalize = false; // remap [min,max] to [0,1]; without it values outside [0,1] are an error
+    bool normalize =
+        false; // remap [min,max] to [0,1]; without it values outside [0,1] are an error
 };
 
 // Errors name the file and the problem: unreadable, not an image, truncated, zero size,

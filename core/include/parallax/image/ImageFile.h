@@ -12,7 +12,7 @@
 namespace px {
 
 struct ImageReadOptions {
-    int maxSide = 16384;     // larger images are refused unless this is raised
+    int maxSide = 16384;         // larger images are refused unless this is raised
     bool rejectNonFinite = true; // NaN/Inf texels are an error (count and first position)
 };
 

@@ -8,7 +8,19 @@
 
 namespace px {
 
-enum class Technique { None, Normal, Offset, Steep, Pom, Relief, Secant, Cone, RelaxedCone, Pyramid, Exact };
+enum class Technique {
+    None,
+    Normal,
+    Offset,
+    Steep,
+    Pom,
+    Relief,
+    Secant,
+    Cone,
+    RelaxedCone,
+    Pyramid,
+    Exact
+};
 
 // Parameters every technique understands; each reads the ones its info() lists.
 struct TraceParams {

@@ -12,9 +12,9 @@
 namespace px {
 
 struct TraceScene {
-    int rays = 64;        // R
-    double polarDeg = 45; // from the normal, in [0, 90)
-    double azimuthDeg = 0; // from +u towards +v
+    int rays = 64;                 // R
+    double polarDeg = 45;          // from the normal, in [0, 90)
+    double azimuthDeg = 0;         // from +u towards +v
     glm::dvec2 uvOffset{0.0, 0.0}; // added to every uv0 (tests of far-from-origin tiling)
 };
 

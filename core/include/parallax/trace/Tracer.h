@@ -37,8 +37,8 @@ class Tracer {
 public:
     // Fails if the height field is empty, a parameter is out of range, or a supplied map does not
     // match the height field's size or wrap mode.
-    static Result<Tracer> create(const TraceMaps& maps, Technique technique, const TraceParams& params,
-                                 float heightScale);
+    static Result<Tracer> create(const TraceMaps& maps, Technique technique,
+                                 const TraceParams& params, float heightScale);
 
     // uv0 in double so tiled coordinates far from the origin (4096.3) keep their precision: with
     // repeat the integer part is set aside before marching and added back to the hit.
