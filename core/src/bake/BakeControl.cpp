@@ -10,9 +10,13 @@ namespace {
 constexpr const char* kCancelled = "the bake was cancelled";
 }
 
-Error cancelledError() { return Error{kCancelled}; }
+Error cancelledError() {
+    return Error{kCancelled};
+}
 
-bool isCancelled(const Error& error) { return error.message == kCancelled; }
+bool isCancelled(const Error& error) {
+    return error.message == kCancelled;
+}
 
 BakeProgress::BakeProgress(const BakeControl& control, std::int64_t totalWork)
     : m_control(control), m_total(std::max<std::int64_t>(totalWork, 1)) {}

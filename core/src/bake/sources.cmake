@@ -4,4 +4,6 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/MaxMipPyramid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ConeMapReference.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ConeMapBaker.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/NormalMapBaker.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/NormalMapConversion.cpp
 )
