@@ -1,0 +1,21 @@
+#pragma once
+// Saving a document: maps made in the editor (the sample, bakes) are written beside the material
+// as "<name>_<map>.png", then the material JSON with paths relative to its folder. Every file is
+// written atomically; on failure the document is left as it was and the error names the file.
+
+#include "DocumentState.h"
+#include "parallax/Result.h"
+
+#include <string>
+
+namespace px::studio {
+
+// The state as saved: unsaved maps now have files, paths absolute. Maps written: height 16-bit
+// PNG, albedo 8-bit sRGB PNG, normal 16-bit PNG, cone maps 16-bit PNG with R = height and
+// G = sqrt(ratio) rounded down (CONVENTIONS §4).
+Result<DocumentState> saveDocumentState(const DocumentState& state, const std::string& path);
+
+// The file an unsaved map is written to for a material saved at `materialPath`.
+std::string mapFileFor(const std::string& materialPath, MapKind kind);
+
+} // namespace px::studio

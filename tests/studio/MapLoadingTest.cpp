@@ -1,0 +1,243 @@
+// Loading and saving maps and materials: bad files change nothing and name themselves, saved
+// materials reopen equal, maps are recognised by their suffix.
+
+#include "MapLoading.h"
+
+#include "MaterialSaver.h"
+#include "SampleMaterial.h"
+#include "parallax/image/ImageFile.h"
+#include "parallax/io/AtomicWrite.h"
+#include "parallax/material/MaterialFile.h"
+
+#include <QTemporaryDir>
+#include <QTest>
+#include <cmath>
+
+using namespace px;
+using namespace px::studio;
+
+namespace {
+
+std::string writeGrey(const QTemporaryDir& dir, const char* name, int w, int h, float value,
+                      int channels = 1) {
+    Image image(w, h, channels);
+    for (float& p : image.pixels)
+        p = value;
+    const std::string path = dir.filePath(name).toStdString();
+    ImageWriteOptions options;
+    options.format = PixelFormat::UInt16;
+    if (!writeImage(path, image, options))
+        return {};
+    return path;
+}
+
+} // namespace
+
+class MapLoadingTest : public QObject {
+    Q_OBJECT
+private slots:
+    void suffixesNameMaps_data() {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("kind");
+        QTest::addColumn<bool>("depth");
+        QTest::newRow("albedo") << "wall_albedo.png" << int(MapKind::Albedo) << false;
+        QTest::newRow("basecolor") << "Wall_BaseColor.JPG" << int(MapKind::Albedo) << false;
+        QTest::newRow("diffuse") << "wall-diffuse.tga" << int(MapKind::Albedo) << false;
+        QTest::newRow("nrm") << "wall_nrm.png" << int(MapKind::Normal) << false;
+        QTest::newRow("n") << "wall_n.png" << int(MapKind::Normal) << false;
+        QTest::newRow("disp") << "bricks2_disp.jpg" << int(MapKind::Height) << false;
+        QTest::newRow("depth") << "wall_depth.exr" << int(MapKind::Height) << true;
+        QTest::newRow("h") << "wall_h.tif" << int(MapKind::Height) << false;
+        QTest::newRow("cone") << "wall_cone.png" << int(MapKind::Cone) << false;
+        QTest::newRow("relaxed") << "wall_relaxed_cone.png" << int(MapKind::RelaxedCone) << false;
+        QTest::newRow("ao") << "wall_occlusion.png" << int(MapKind::Ao) << false;
+    }
+    void suffixesNameMaps() {
+        QFETCH(QString, file);
+        QFETCH(int, kind);
+        QFETCH(bool, depth);
+        const auto match = mapKindFromFileName(file.toStdString());
+        QVERIFY(match);
+        QCOMPARE(int(match->kind), kind);
+        QCOMPARE(match->depth, depth);
+    }
+
+    void unknownSuffixesAreNotGuessed() {
+        QVERIFY(!mapKindFromFileName("photo.png"));
+        QVERIFY(!mapKindFromFileName("bumpiness.png")); // ends in "ness", not a suffix word
+        QVERIFY(!mapKindFromFileName("plan.png"));      // ends in "n" but not "_n"
+    }
+
+    void corruptFileChangesNothing() {
+        QTemporaryDir dir;
+        const std::string bad = dir.filePath("broken_height.png").toStdString();
+        QVERIFY(writeTextFile(bad, "this is not a PNG"));
+        const DocumentState state = makeSampleState(ProceduralMap::Bricks, 32);
+        const Result<Loaded> loaded = loadMapFile(state, MapKind::Height, bad);
+        QVERIFY(!loaded);
+        QVERIFY2(loaded.error().message.find("broken_height.png") != std::string::npos,
+                 loaded.error().message.c_str());
+    }
+
+    void coneMapMustMatchItsHeightMap() {
+        QTemporaryDir dir;
+        const DocumentState state = makeSampleState(ProceduralMap::Bricks, 32);
+        const std::string wrongSize = writeGrey(dir, "small_cone.png", 16, 16, 0.5f, 3);
+        Result<Loaded> loaded = loadMapFile(state, MapKind::Cone, wrongSize);
+        QVERIFY(!loaded);
+        QVERIFY(loaded.error().message.find("16x16") != std::string::npos);
+        // Right size, but R is not this height map: baked from another one.
+        Image other(32, 32, 3);
+        const std::string otherPath = dir.filePath("other_cone.png").toStdString();
+        QVERIFY(writeImage(otherPath, other, {PixelFormat::UInt16, false}));
+        loaded = loadMapFile(state, MapKind::Cone, otherPath);
+        QVERIFY(!loaded);
+        QVERIFY(loaded.error().message.find("another height map") != std::string::npos);
+    }
+
+    void newHeightDropsConeMaps() {
+        QTemporaryDir dir;
+        DocumentState state = makeSampleState(ProceduralMap::Bricks, 32);
+        auto assets = std::make_shared<MaterialAssets>(*state.assets);
+        assets->cone = ConeMap(ConeKind::Conservative, 32, 32);
+        state.assets = assets;
+        state.setUnsaved(MapKind::Cone, true);
+        const std::string flat = writeGrey(dir, "flat_height.png", 8, 8, 0.25f);
+        const Result<Loaded> loaded = loadMapFile(state, MapKind::Height, flat);
+        QVERIFY(loaded);
+        QVERIFY(!loaded->state.hasMap(MapKind::Cone));
+        QVERIFY(!loaded->state.isUnsaved(MapKind::Cone));
+        QCOMPARE(loaded->state.assets->height.width, 8);
+        QVERIFY(!loaded->notes.empty());
+        // The input is untouched.
+        QCOMPARE(state.assets->height.width, 32);
+        QVERIFY(state.hasMap(MapKind::Cone));
+    }
+
+    void depthMapsLoadInverted() {
+        QTemporaryDir dir;
+        const std::string path = writeGrey(dir, "wall_depth.png", 4, 4, 0.25f);
+        const Result<Loaded> loaded =
+            loadMapFile(makeSampleState(ProceduralMap::Bricks, 8), MapKind::Height, path, true);
+        QVERIFY(loaded);
+        QVERIFY(std::abs(loaded->state.assets->height.at(1, 1) - 0.75f) < 1e-4f);
+        QVERIFY(loaded->state.material.heightIsDepth);
+    }
+
+    void sampleSavesAndReopensEqual() {
+        QTemporaryDir dir;
+        const std::string file = dir.filePath("sub/bricks.json").toStdString();
+        QVERIFY(QDir().mkpath(dir.filePath("sub")));
+        DocumentState state = makeSampleState(ProceduralMap::Bricks, 64);
+        state.material.heightScale = 0.08f;
+        const Result<DocumentState> saved = saveDocumentState(state, file);
+        QVERIFY2(saved, saved ? "" : saved.error().message.c_str());
+        QVERIFY(!saved->anyUnsaved());
+        QVERIFY(QFile::exists(dir.filePath("sub/bricks_height.png")));
+        QVERIFY(QFile::exists(dir.filePath("sub/bricks_albedo.png")));
+        // Paths in the file are relative to it, so the folder can move.
+        const Result<std::string> text = readTextFile(file);
+        QVERIFY(text);
+        QVERIFY(text->find("\"bricks_height.png\"") != std::string::npos);
+
+        const Result<Loaded> reopened = openMaterialFile(file);
+        QVERIFY2(reopened, reopened ? "" : reopened.error().message.c_str());
+        const HeightField& a = state.assets->height;
+        const HeightField& b = reopened->state.assets->height;
+        QCOMPARE(b.width, a.width);
+        float worst = 0.0f;
+        for (std::size_t i = 0; i < a.texels.size(); ++i)
+            worst = std::max(worst, std::abs(a.texels[i] - b.texels[i]));
+        QVERIFY(worst <= 0.5f / 65535.0f + 1e-7f); // 16-bit PNG
+        QCOMPARE(reopened->state.material.heightScale, 0.08f);
+        QCOMPARE(reopened->state.assets->albedo.channels, 3);
+    }
+
+    void savedConeMapsNeverWiden() {
+        QTemporaryDir dir;
+        DocumentState state = makeSampleState(ProceduralMap::Rivets, 16);
+        auto assets = std::make_shared<MaterialAssets>(*state.assets);
+        assets->cone = ConeMap(ConeKind::Conservative, 16, 16);
+        for (int i = 0; i < 256; ++i)
+            assets->cone.sqrtRatio[static_cast<std::size_t>(i)] = 0.1234567f + i * 1e-4f;
+        state.assets = assets;
+        state.setUnsaved(MapKind::Cone, true);
+        const std::string file = dir.filePath("r.json").toStdString();
+        const Result<DocumentState> saved = saveDocumentState(state, file);
+        QVERIFY(saved);
+        const Result<Loaded> reopened = openMaterialFile(file);
+        QVERIFY2(reopened, reopened ? "" : reopened.error().message.c_str());
+        const ConeMap& cone = reopened->state.assets->cone;
+        QCOMPARE(cone.width, 16);
+        for (int i = 0; i < 256; ++i) {
+            const float original = assets->cone.sqrtRatio[static_cast<std::size_t>(i)];
+            QVERIFY(cone.sqrtRatio[static_cast<std::size_t>(i)] <= original);
+            QVERIFY(cone.sqrtRatio[static_cast<std::size_t>(i)] > original - 2.0f / 65535.0f);
+        }
+    }
+
+    void relativePathsSurviveSaveAsElsewhere() {
+        QTemporaryDir dir;
+        QVERIFY(QDir().mkpath(dir.filePath("a/maps")));
+        QVERIFY(QDir().mkpath(dir.filePath("b/deep")));
+        const std::string height = writeGrey(dir, "a/maps/w_height.png", 8, 8, 0.5f);
+        Result<Loaded> loaded =
+            loadMapFile(makeSampleState(ProceduralMap::Bricks, 8), MapKind::Height, height);
+        QVERIFY(loaded);
+        const std::string first = dir.filePath("a/w.json").toStdString();
+        Result<DocumentState> saved = saveDocumentState(loaded->state, first);
+        QVERIFY(saved);
+        const std::string second = dir.filePath("b/deep/w.json").toStdString();
+        saved = saveDocumentState(*saved, second);
+        QVERIFY(saved);
+        const Result<Loaded> reopened = openMaterialFile(second);
+        QVERIFY2(reopened, reopened ? "" : reopened.error().message.c_str());
+        QCOMPARE(reopened->state.assets->height.width, 8);
+        const Result<Material> raw = loadMaterial(second);
+        QVERIFY(raw);
+        QCOMPARE(QString::fromStdString(raw->maps.height), QString("../../a/maps/w_height.png"));
+    }
+
+    void folderImportFindsMapsBySuffix() {
+        QTemporaryDir dir;
+        writeGrey(dir, "rock_disp.png", 8, 8, 0.5f);
+        writeGrey(dir, "rock_color.png", 8, 8, 0.7f);
+        writeGrey(dir, "notes.png", 8, 8, 0.1f);
+        const Result<FoundMaps> found = findMapsInFolder(dir.path().toStdString());
+        QVERIFY(found);
+        QCOMPARE(found->maps.size(), std::size_t(2));
+        QCOMPARE(int(found->maps.front().kind), int(MapKind::Height));
+        QCOMPARE(found->unmatched.size(), std::size_t(1));
+        const Result<Loaded> loaded =
+            loadMaps(makeSampleState(ProceduralMap::Bricks, 16), found->maps);
+        QVERIFY(loaded);
+        QCOMPARE(loaded->state.assets->height.width, 8);
+        QCOMPARE(loaded->state.assets->albedo.width, 8);
+        QVERIFY(!loaded->state.isUnsaved(MapKind::Albedo));
+    }
+
+    void folderImportIsAllOrNothing() {
+        QTemporaryDir dir;
+        writeGrey(dir, "rock_height.png", 8, 8, 0.5f);
+        QVERIFY(writeTextFile(dir.filePath("rock_normal.png").toStdString(), "garbage"));
+        const Result<FoundMaps> found = findMapsInFolder(dir.path().toStdString());
+        QVERIFY(found);
+        const Result<Loaded> loaded =
+            loadMaps(makeSampleState(ProceduralMap::Bricks, 16), found->maps);
+        QVERIFY(!loaded);
+        QVERIFY(loaded.error().message.find("rock_normal.png") != std::string::npos);
+    }
+
+    void badMaterialFileNamesItself() {
+        QTemporaryDir dir;
+        const std::string file = dir.filePath("bad.json").toStdString();
+        QVERIFY(writeTextFile(file, "{ \"format\": \"parallax-studio-material\", \"version\": 1, "
+                                    "\"heigth\": {} }"));
+        const Result<Loaded> loaded = openMaterialFile(file);
+        QVERIFY(!loaded);
+        QVERIFY(loaded.error().message.find("bad.json") != std::string::npos);
+    }
+};
+
+QTEST_MAIN(MapLoadingTest)
+#include "MapLoadingTest.moc"
