@@ -18,3 +18,7 @@ find_package(Threads REQUIRED)
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Test Concurrent Svg)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
 find_package(benchmark CONFIG)
+# PLplot draws the bench's work-precision plot. Its CMake config names Tcl libraries Debian does
+# not install, so it is found through pkg-config.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(PLPLOT REQUIRED IMPORTED_TARGET plplot)

@@ -1,0 +1,216 @@
+// parallax-cli bench: every technique over a sweep of its quality settings on the canonical scene,
+// measured against `exact` (core/include/parallax/eval/Bench.h), as CSV and a work-precision plot.
+
+#include "Cli.h"
+#include "WorkPrecisionPlot.h"
+#include "parallax/eval/BenchCsv.h"
+#include "parallax/eval/WorkPrecision.h"
+#include "parallax/heightfield/HeightFieldLoader.h"
+#include "parallax/io/AtomicWrite.h"
+#include "parallax/sample/ProceduralMaps.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <thread>
+#include <unistd.h>
+
+namespace px::cli {
+
+namespace {
+
+struct BenchOptions {
+    std::vector<std::string> heights;
+    std::vector<std::string> samples;
+    int sampleSize = 128;
+    bool invert = false;
+    bool normalize = false;
+    std::string channel = "red";
+    std::string wrap = "repeat";
+    std::string techniques = "all";
+    bool defaultsOnly = false;
+    std::vector<double> polar{30.0, 60.0, 80.0, 87.0};
+    double azimuth = 35.0;
+    std::vector<float> scales{0.05f, 0.1f};
+    int rays = 128;
+    int repeats = 1;
+    bool gpu = false;
+    std::string out;
+    std::string plot;
+    bool quiet = false;
+};
+
+// The processor model and hardware threads, for the report (Linux; "unknown CPU" elsewhere).
+std::string machineName() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line, model = "unknown CPU";
+    while (std::getline(cpuinfo, line)) {
+        if (line.rfind("model name", 0) == 0) {
+            model = line.substr(line.find(':') + 2);
+            break;
+        }
+    }
+    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " threads";
+}
+
+Result<std::vector<BenchMap>> loadMaps(const BenchOptions& o) {
+    std::vector<BenchMap> maps;
+    HeightLoadOptions load;
+    load.channel = parseHeightChannel(o.channel).value_or(HeightChannel::Red);
+    load.invert = o.invert;
+    load.normalize = o.normalize;
+    for (const std::string& file : o.heights) {
+        Result<HeightField> field = loadHeightField(file, load);
+        if (!field)
+            return field.error();
+        maps.push_back({file, std::make_shared<HeightField>(std::move(*field))});
+    }
+    for (const std::string& name : o.samples) {
+        const ProceduralMap kind = *parseProceduralMap(name);
+        maps.push_back(
+            {name + " " + std::to_string(o.sampleSize),
+             std::make_shared<HeightField>(makeProceduralMap(kind, o.sampleSize, o.sampleSize))});
+    }
+    if (maps.empty())
+        return Error{"give at least one height map (--height FILE or --sample NAME)"};
+    return maps;
+}
+
+// Until the GL renderer (app/render) offers frame timing to the command line, the GPU column stays
+// empty and says why.
+GpuFrameTimer gpuTimer(std::string& unavailable) {
+    unavailable = "no GPU timing: this build's command line has no GL renderer yet";
+    return {};
+}
+
+void printSummary(std::ostream& out, const BenchReport& report) {
+    char line[256];
+    std::snprintf(line, sizeof line, "%-13s %-24s %6s %10s %10s %10s %9s %9s %10s\n", "technique",
+                  "setting", "polar", "mean err", "p99 err", "max err", "wrong", "fetches",
+                  "ns/ray");
+    out << line;
+    for (const BenchRow& row : report.pooled) {
+        const std::string ns =
+            row.cpuNsPerRay ? std::to_string(std::lround(*row.cpuNsPerRay)) : "-";
+        std::snprintf(line, sizeof line, "%-13s %-24s %6g %10.4g %10.4g %10.4g %9lld %9.2f %10s\n",
+                      info(row.setting.technique).name.data(), row.setting.label.c_str(),
+                      row.polarDeg, row.stats.meanError, row.stats.p99Error, row.stats.maxError,
+                      static_cast<long long>(row.stats.wrongSurface), row.stats.meanFetches,
+                      ns.c_str());
+        out << line;
+    }
+}
+
+int runBenchCommand(const BenchOptions& o) {
+    Result<std::vector<Technique>> techniques = parseTechniqueList(o.techniques);
+    if (!techniques)
+        return fail(techniques.error().message);
+    Result<std::vector<BenchMap>> maps = loadMaps(o);
+    if (!maps)
+        return fail(maps.error().message);
+
+    BenchConfig config;
+    config.maps = std::move(*maps);
+    config.wrap = parseWrapMode(o.wrap).value_or(WrapMode::Repeat);
+    for (Technique t : *techniques) {
+        if (o.defaultsOnly) {
+            config.settings.push_back(defaultSetting(t));
+        } else {
+            for (BenchSetting& s : qualitySweep(t))
+                config.settings.push_back(std::move(s));
+        }
+    }
+    config.polarDeg = o.polar;
+    config.azimuthDeg = o.azimuth;
+    config.scales = o.scales;
+    config.rays = o.rays;
+    config.timingRepeats = o.repeats;
+    if (o.gpu)
+        config.gpuTimer = gpuTimer(config.gpuUnavailable);
+    if (Status s = validate(config); !s)
+        return fail(s.error().message);
+
+    // Progress on one rewritten line, only where someone watches it.
+    const bool showProgress = !o.quiet && isatty(STDERR_FILENO);
+    EvalControl control;
+    if (showProgress) {
+        control.progress = [](const EvalProgress& p) {
+            std::fprintf(stderr, "\r\033[K[%d/%d] %s", p.done, p.total, p.stage.c_str());
+            std::fflush(stderr);
+        };
+    }
+    Result<BenchReport> report = runBench(config, control);
+    if (showProgress)
+        std::fprintf(stderr, "\r\033[K");
+    if (!report)
+        return fail(report.error().message);
+
+    if (o.out == "-") {
+        std::cout << benchCsv(*report);
+    } else if (Status s = writeTextFile(o.out, benchCsv(*report)); !s) {
+        return fail(s.error().message);
+    }
+    const std::string machine = machineName();
+    if (!o.plot.empty()) {
+        PlotLabels labels;
+        labels.title = "Work-precision: p99 hit error against cost, " +
+                       std::to_string(report->rays) + "\xc2\xb2 rays per map and scale";
+        labels.subtitle = machine + (report->gpuNote.empty() ? "" : "; " + report->gpuNote);
+        if (Status s = writeWorkPrecisionPlot(o.plot, makeWorkPrecisionChart(*report), labels); !s)
+            return fail(s.error().message);
+    }
+    if (!o.quiet) {
+        std::ostream& out = o.out == "-" ? std::cerr : std::cout;
+        out << "CPU: " << machine << " (times: one thread, fastest of " << o.repeats << ")\n";
+        if (!report->gpuNote.empty())
+            out << "GPU: " << report->gpuNote << "\n";
+        printSummary(out, *report);
+    }
+    return 0;
+}
+
+} // namespace
+
+Action addBenchCommand(CLI::App& app) {
+    auto o = std::make_shared<BenchOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "bench", "Measure every technique and quality setting against the exact reference "
+                 "(error, fetches, time) and write a CSV report and a work-precision plot");
+    cmd->add_option("--height", o->heights, "Height maps (PNG, TIFF, EXR, BMP, JPEG, TGA)");
+    std::vector<std::string> names(proceduralMapNames().begin(), proceduralMapNames().end());
+    cmd->add_option("--sample", o->samples, "Built-in procedural maps to measure as well")
+        ->delimiter(',')
+        ->check(CLI::IsMember(names));
+    cmd->add_option("--sample-size", o->sampleSize, "Side of the --sample maps in texels")
+        ->check(CLI::Range(1, 4096));
+    cmd->add_flag("--invert", o->invert, "The files are depth maps (white = deep)");
+    cmd->add_flag("--normalize", o->normalize, "Remap each map's [min, max] to [0, 1]");
+    cmd->add_option("--channel", o->channel, "Channel holding the height")
+        ->check(CLI::IsMember({"red", "green", "blue", "alpha", "luminance"}));
+    cmd->add_option("--wrap", o->wrap, "Wrap mode of the material")
+        ->check(CLI::IsMember({"repeat", "clamp"}));
+    cmd->add_option("--techniques", o->techniques, "all, or a comma-separated list of techniques");
+    cmd->add_flag("--defaults-only", o->defaultsOnly,
+                  "Measure each technique's default setting only, not its sweep");
+    cmd->add_option("--polar", o->polar, "View angles from the normal, degrees [0, 90)")
+        ->delimiter(',')
+        ->check(CLI::Range(0.0, 89.999));
+    cmd->add_option("--azimuth", o->azimuth, "View azimuth from +u towards +v, degrees")
+        ->check(CLI::Range(-360.0, 360.0));
+    cmd->add_option("--scales", o->scales, "Height scales s in uv units")
+        ->delimiter(',')
+        ->check(CLI::Range(0.0f, 100.0f));
+    cmd->add_option("--rays", o->rays, "Rays per side (R): R x R rays per map, scale and angle")
+        ->check(CLI::Range(1, 4096));
+    cmd->add_option("--repeats", o->repeats,
+                    "Timed single-thread passes per setting, fastest reported (0: no CPU timing)")
+        ->check(CLI::Range(0, 100));
+    cmd->add_flag("--gpu", o->gpu, "Also time a 1920x1080 frame per setting on the GL renderer");
+    cmd->add_option("--out", o->out, "Output CSV; - for standard output")->required();
+    cmd->add_option("--plot", o->plot, "Work-precision plot (.svg)");
+    cmd->add_flag("--quiet", o->quiet, "No progress line and no summary table");
+    return [o] { return runBenchCommand(*o); };
+}
+
+} // namespace px::cli

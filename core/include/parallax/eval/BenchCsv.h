@@ -1,0 +1,20 @@
+#pragma once
+// The bench report as CSV (columns documented in the README, "Benchmark and stability"): one row
+// per polar angle, setting, map and scale, then one pooled row (map "all") per angle and setting.
+
+#include "parallax/eval/Bench.h"
+
+#include <string>
+#include <string_view>
+
+namespace px {
+
+inline constexpr std::string_view kBenchCsvHeader =
+    "map,width,height,wrap,scale,polar,azimuth,rays,technique,setting,default,"
+    "min_layers,max_layers,binary_steps,secant_steps,max_steps,"
+    "mean_error,p99_error,max_error,wrong_surface,invalid,"
+    "mean_fetches,p99_fetches,max_fetches,cpu_ns_per_ray,gpu_ms_per_frame,gpu_renderer";
+
+std::string benchCsv(const BenchReport& report);
+
+} // namespace px

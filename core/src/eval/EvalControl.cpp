@@ -1,0 +1,16 @@
+#include "parallax/eval/EvalControl.h"
+
+namespace px {
+namespace {
+constexpr const char* kCancelled = "the evaluation was cancelled";
+}
+
+Error evaluationCancelled() {
+    return Error{kCancelled};
+}
+
+bool isEvaluationCancelled(const Error& error) {
+    return error.message == kCancelled;
+}
+
+} // namespace px
