@@ -31,6 +31,7 @@ int run(int argc, char** argv) {
     };
     add(addSampleCommand);
     add(addTraceCommand);
+    add(addExportCommand);
     add(addBenchCommand);
 
     try {

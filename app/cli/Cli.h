@@ -14,6 +14,7 @@ using Action = std::function<int()>;
 // Every subcommand registers itself through one of these (declared here, defined in its file).
 Action addTraceCommand(CLI::App& app);
 Action addSampleCommand(CLI::App& app);
+Action addExportCommand(CLI::App& app);
 Action addBenchCommand(CLI::App& app);
 
 // Prints "error: <message>" to stderr and returns the failure status.

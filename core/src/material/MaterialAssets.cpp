@@ -32,8 +32,9 @@ MapSet mapsUsed(const Material& m) {
     set.normal = m.normalSource == NormalSource::Map;
     set.cone = technique.needsConeMap;
     set.relaxedCone = technique.needsRelaxedConeMap;
+    // Occlusion darkens either lighting model; roughness and metallic are metallic-roughness only.
     const bool pbr = m.lighting == LightingModel::MetallicRoughness;
-    set.ao = pbr && present.ao;
+    set.ao = present.ao;
     set.roughness = pbr && present.roughness;
     set.metallic = pbr && present.metallic;
     return set;

@@ -17,7 +17,7 @@ constexpr std::uintmax_t kMaxMaterialFileBytes = 1 << 20;
 
 } // namespace
 
-Result<Material> loadMaterial(const std::string& path) {
+Result<Material> loadMaterial(const std::string& path, MaterialCheck check) {
     std::error_code ec;
     if (const std::uintmax_t size = fs::file_size(path, ec); !ec && size > kMaxMaterialFileBytes)
         return fileError(path, "the file is " + std::to_string(size) +
@@ -25,7 +25,7 @@ Result<Material> loadMaterial(const std::string& path) {
     Result<std::string> text = readTextFile(path);
     if (!text)
         return text.error();
-    return parseMaterial(*text, path);
+    return parseMaterial(*text, path, check);
 }
 
 Status saveMaterial(const Material& material, const std::string& path) {

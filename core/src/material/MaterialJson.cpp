@@ -265,11 +265,12 @@ double shortest(float value) {
     return std::strtod(buffer, nullptr);
 }
 
-void read(const json& root, Reader& reader, Material& material);
+void read(const json& root, Reader& reader, Material& material, MaterialCheck check);
 
 } // namespace
 
-Result<Material> parseMaterial(std::string_view text, const std::string& source) {
+Result<Material> parseMaterial(std::string_view text, const std::string& source,
+                               MaterialCheck check) {
     json root;
     try {
         root = json::parse(text.begin(), text.end());
@@ -283,7 +284,7 @@ Result<Material> parseMaterial(std::string_view text, const std::string& source)
     Reader reader;
     Material material;
     try {
-        read(root, reader, material);
+        read(root, reader, material, check);
     } catch (const json::exception& e) { // not expected: every access checks its type first
         return fileError(source, std::string("cannot read the material (") + e.what() + ")");
     }
@@ -294,7 +295,7 @@ Result<Material> parseMaterial(std::string_view text, const std::string& source)
 
 namespace {
 
-void read(const json& root, Reader& reader, Material& material) {
+void read(const json& root, Reader& reader, Material& material, MaterialCheck check) {
     if (!root.is_object()) {
         reader.add("",
                    "expected a JSON object (a Parallax Studio material), got " + describe(root));
@@ -304,7 +305,7 @@ void read(const json& root, Reader& reader, Material& material) {
         std::set<std::string> reported;
         for (const MaterialProblem& p : reader.problems)
             reported.insert(p.pointer);
-        for (MaterialProblem& p : validateMaterial(material)) {
+        for (MaterialProblem& p : validateMaterial(material, check)) {
             if (!reported.count(p.pointer))
                 reader.problems.push_back(std::move(p));
         }

@@ -11,7 +11,7 @@ namespace px {
 
 using namespace material;
 
-std::vector<MaterialProblem> validateMaterial(const Material& m) {
+std::vector<MaterialProblem> validateMaterial(const Material& m, MaterialCheck check) {
     std::vector<MaterialProblem> problems;
     auto number = [&](const char* pointer, float value, NumberRange range) {
         if (!std::isfinite(value) || value < range.lo || value > range.hi)
@@ -45,6 +45,8 @@ std::vector<MaterialProblem> validateMaterial(const Material& m) {
     number("/lighting/shininess", m.shininess, kShininess);
 
     // The maps the technique and the normal source read must be there.
+    if (check == MaterialCheck::Preset)
+        return problems;
     const TechniqueInfo& technique = info(m.technique);
     if (m.maps.height.empty()) {
         if (technique.parallax)

@@ -25,8 +25,8 @@ struct MapSet {
 };
 
 // The maps the material's own shader samples: height for parallax or height-derived normals, the
-// normal map for NormalSource::Map, the cone map the technique reads, albedo when there is one,
-// AO/roughness/metallic under the metallic-roughness model when there are files for them. (The
+// normal map for NormalSource::Map, the cone map the technique reads, albedo and AO when there are
+// files for them, roughness/metallic under the metallic-roughness model when there are. (The
 // max-mip pyramid is built when loading, never stored.) A needed cone map the material has no
 // file for is still listed: it is baked from the height map.
 MapSet mapsUsed(const Material& material);

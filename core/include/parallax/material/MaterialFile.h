@@ -39,16 +39,25 @@ struct MaterialProblem {
     std::string message;
 };
 
+// What a material must have to be valid.
+enum class MaterialCheck {
+    Complete, // a material to render: the maps its technique and normal source read are named
+    Preset,   // settings to apply to other maps (batch export): maps may be absent
+};
+
 // The value checks the file format promises (ranges, min <= max layers, the maps the technique and
 // normal source need), on a material already in memory. Empty when the material is valid.
-std::vector<MaterialProblem> validateMaterial(const Material& material);
+std::vector<MaterialProblem> validateMaterial(const Material& material,
+                                              MaterialCheck check = MaterialCheck::Complete);
 
 // Parses and validates the JSON text; `source` names it in errors. On failure the error lists
 // every problem, one a line: "SOURCE: /technique/maxLayers: expected an integer 1..4096, got "x"".
-Result<Material> parseMaterial(std::string_view json, const std::string& source);
+Result<Material> parseMaterial(std::string_view json, const std::string& source,
+                               MaterialCheck check = MaterialCheck::Complete);
 
 // Reads, parses and validates a material file. Map paths stay as written (see resolveMapPath).
-Result<Material> loadMaterial(const std::string& path);
+Result<Material> loadMaterial(const std::string& path,
+                              MaterialCheck check = MaterialCheck::Complete);
 
 // The JSON text of a material: every field, current version, keys in a stable order.
 std::string materialToJson(const Material& material);

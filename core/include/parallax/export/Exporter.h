@@ -1,0 +1,40 @@
+#pragma once
+// Exporting a material for the project's own renderer or for an engine.
+
+#include "parallax/Result.h"
+#include "parallax/export/ExportFormat.h"
+#include "parallax/image/ImageFile.h"
+#include "parallax/material/Material.h"
+#include "parallax/material/MaterialAssets.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace px {
+
+struct ExportOptions {
+    ExportFormat format = ExportFormat::Package;
+    std::string outDir;
+    bool force = false; // replace an existing export (see ExportFolder.h)
+    // Height: 16-bit PNG (UInt16) or float EXR (Float). Normal maps: 8 or 16-bit PNG.
+    PixelFormat heightFormat = PixelFormat::UInt16;
+    PixelFormat normalFormat = PixelFormat::UInt8;
+    NormalGreen packageGreen = NormalGreen::OpenGL; // the package's normal map convention
+    AssetLoadOptions load;
+};
+
+struct ExportResult {
+    std::string folder;
+    std::vector<std::string> files; // written, in order (names inside the folder)
+    std::vector<std::string> notes; // things the user should know (e.g. a map baked on the way)
+};
+
+// Loads the maps the target needs (paths relative to `materialFile`), converts them (bit depth,
+// green convention, channel packing, cone maps baked when the material has none), writes them and
+// the target's material description into `options.outDir` as one atomic folder. Errors name the
+// file or the folder and the problem; on failure nothing is left behind.
+Result<ExportResult> exportMaterial(const Material& material, const std::string& materialFile,
+                                    const ExportOptions& options);
+
+} // namespace px

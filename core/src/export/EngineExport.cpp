@@ -1,0 +1,176 @@
+// Unreal and Unity: textures named, encoded and channel-packed the way each engine's importer
+// and standard materials expect, and a note of the settings to enter (neither has a text
+// material format to write).
+
+#include "ExportJob.h"
+#include "ExportTextures.h"
+
+#include <sstream>
+
+namespace px::exporter {
+
+namespace {
+
+// The parallax part of the notes: what the material asks for in the engine's terms.
+void parallaxLines(std::ostringstream& note, const Material& m, const char* scaleName,
+                   const char* minName, const char* maxName) {
+    const TechniqueInfo& t = info(m.technique);
+    const TraceParams layers = t.usesLayers ? m.params : info(Technique::Pom).defaults;
+    note << "  " << scaleName << " = " << decimal(m.heightScale)
+         << "   (the relief's depth in uv units: h = 0 lies this far below the surface)\n"
+         << "  " << minName << " = " << layers.minLayers << ", " << maxName << " = "
+         << layers.maxLayers << "\n";
+    if (!t.usesLayers)
+        note << "  (the material uses '" << t.name
+             << "', which the engine does not have: these are the layer-march defaults)\n";
+}
+
+const char* wrapText(const Material& m) {
+    return m.wrap == WrapMode::Repeat ? "Wrap (repeat)" : "Clamp";
+}
+
+} // namespace
+
+Status writeUnreal(ExportJob& job) {
+    const Material& m = job.material;
+    const std::string base = "T_" + job.stem;
+    std::ostringstream note;
+    note << "Unreal Engine import settings for " << m.name << "\n\nTextures:\n";
+    if (!job.assets.albedo.empty()) {
+        if (Status s = job.image(base + "_BC.png", job.assets.albedo, PixelFormat::UInt8, true); !s)
+            return s;
+        note << "  " << base << "_BC.png    Base Color: sRGB on, Compression Default\n";
+    }
+    Result<Image> normals = job.normals(NormalGreen::DirectX);
+    if (!normals)
+        return normals.error();
+    if (!normals->empty()) {
+        if (Status s = job.image(base + "_N.png", *normals, job.options.normalFormat); !s)
+            return s;
+        note << "  " << base << "_N.png     Normal: DirectX green (Y-) as Unreal expects; "
+             << "Compression Normalmap, sRGB off, Flip Green Channel off\n";
+    }
+    if (const std::optional<Image> orm = job.orm()) {
+        if (Status s = job.image(base + "_ORM.png", *orm, PixelFormat::UInt8); !s)
+            return s;
+        note << "  " << base << "_ORM.png   R = Ambient Occlusion, G = Roughness, B = Metallic: "
+             << "Compression Masks, sRGB off\n";
+    }
+    const bool parallax = info(m.technique).parallax;
+    if (parallax) {
+        if (Status s = job.image(job.heightName(base + "_H"), heightImage(job.assets.height, false),
+                                 job.options.heightFormat);
+            !s)
+            return s;
+        note << "  " << job.heightName(base + "_H")
+             << "     Height (white = high): Compression Grayscale (HDR for .exr), sRGB off\n";
+    }
+    note << "\nEvery texture: Address X/Y = " << wrapText(m) << ".\n";
+    note << "\nMaterial graph:\n";
+    if (parallax) {
+        note << "  Add the ParallaxOcclusionMapping function; Heightmap Texture = " << base
+             << "_H, Heightmap Channel = (1, 0, 0, 0), UVs = TexCoord[0] * " << decimal(m.tiling)
+             << ",\n  Reference Plane so that white lies on the surface (the relief is carved "
+                "into the polygon), and\n";
+        parallaxLines(note, m, "Height Ratio", "Min Steps", "Max Steps");
+        note << "  Feed its Parallax UVs to every texture sample below.\n";
+    } else {
+        note << "  UVs = TexCoord[0] * " << decimal(m.tiling) << " (no parallax: technique "
+             << info(m.technique).name << ").\n";
+    }
+    note << "  Base Color <- " << base << "_BC RGB";
+    note << "\n  Normal <- " << base << "_N RGB";
+    if (job.orm())
+        note << "\n  Ambient Occlusion <- " << base << "_ORM R, Roughness <- G, Metallic <- B";
+    else
+        note << "\n  Roughness = " << decimal(m.roughness)
+             << ", Metallic = " << decimal(m.metallic);
+    note << "\n";
+    return job.text(job.stem + "_Unreal.txt", note.str());
+}
+
+Status writeUnity(ExportJob& job) {
+    const Material& m = job.material;
+    const std::string base = job.stem;
+    std::ostringstream note;
+    note << "Unity import settings for " << m.name << "\n\nTextures:\n";
+    if (!job.assets.albedo.empty()) {
+        if (Status s = job.image(base + "_Albedo.png", job.assets.albedo, PixelFormat::UInt8, true);
+            !s)
+            return s;
+        note << "  " << base << "_Albedo.png              Default, sRGB (Color Texture) on\n";
+    }
+    Result<Image> normals = job.normals(NormalGreen::OpenGL);
+    if (!normals)
+        return normals.error();
+    if (!normals->empty()) {
+        if (Status s = job.image(base + "_Normal.png", *normals, job.options.normalFormat); !s)
+            return s;
+        note << "  " << base << "_Normal.png              Texture Type: Normal map (OpenGL green, "
+             << "Y+, as Unity expects)\n";
+    }
+    const bool packed =
+        !job.assets.roughness.empty() || !job.assets.metallic.empty() || !job.assets.ao.empty();
+    if (packed) {
+        // Built-in Standard and URP Lit: metallic in R, smoothness (1 - roughness) in alpha.
+        const ChannelSource ms[4] = {{&job.assets.metallic, 0, false, m.metallic},
+                                     {&job.assets.metallic, 0, false, m.metallic},
+                                     {&job.assets.metallic, 0, false, m.metallic},
+                                     {&job.assets.roughness, 0, true, 1.0f - m.roughness}};
+        // HDRP Lit mask map: R metallic, G occlusion, B detail mask, A smoothness.
+        const ChannelSource mask[4] = {{&job.assets.metallic, 0, false, m.metallic},
+                                       {&job.assets.ao, 0, false, 1.0f},
+                                       {nullptr, 0, false, 1.0f},
+                                       {&job.assets.roughness, 0, true, 1.0f - m.roughness}};
+        if (Status s = job.image(base + "_MetallicSmoothness.png", *packChannels(ms, 4, m.wrap),
+                                 PixelFormat::UInt8);
+            !s)
+            return s;
+        if (Status s = job.image(base + "_MaskMap.png", *packChannels(mask, 4, m.wrap),
+                                 PixelFormat::UInt8);
+            !s)
+            return s;
+        note << "  " << base << "_MetallicSmoothness.png  sRGB off; R = Metallic, A = Smoothness "
+             << "(Built-in Standard, URP Lit)\n"
+             << "  " << base << "_MaskMap.png             sRGB off; R = Metallic, G = Occlusion, "
+             << "B = Detail Mask, A = Smoothness (HDRP Lit)\n";
+        if (!job.assets.ao.empty()) {
+            if (Status s = job.image(base + "_Occlusion.png", job.assets.ao, PixelFormat::UInt8);
+                !s)
+                return s;
+            note << "  " << base << "_Occlusion.png           sRGB off (Built-in Standard, URP)\n";
+        }
+    }
+    const bool parallax = info(m.technique).parallax;
+    if (parallax) {
+        if (Status s = job.image(job.heightName(base + "_Height"),
+                                 heightImage(job.assets.height, false), job.options.heightFormat);
+            !s)
+            return s;
+        note << "  " << job.heightName(base + "_Height")
+             << "              sRGB off, white = high\n";
+    }
+    note << "\nEvery texture: Wrap Mode = " << (m.wrap == WrapMode::Repeat ? "Repeat" : "Clamp")
+         << ". Material Tiling = (" << decimal(m.tiling) << ", " << decimal(m.tiling) << ").\n";
+    if (!packed)
+        note << "Metallic = " << decimal(m.metallic)
+             << ", Smoothness = " << decimal(1.0f - m.roughness) << "\n";
+    if (parallax) {
+        note << "\nHDRP Lit (parallax occlusion): Displacement Mode = Pixel displacement, Height "
+                "Map = "
+             << job.heightName(base + "_Height")
+             << ", Parametrization = Amplitude,\n  Amplitude = " << decimal(m.heightScale)
+             << " x the tile's size in centimetres (" << decimal(m.heightScale * 100.0f)
+             << " cm for a 1 m tile), Base = 1 (white lies on the surface),\n";
+        parallaxLines(note, m, "(height scale)", "Minimum Steps", "Maximum Steps");
+        note << "Built-in Standard / URP Lit (offset parallax only): Height Map = "
+             << job.heightName(base + "_Height") << ", Height Scale = " << decimal(m.heightScale);
+        if (m.heightScale < 0.005f || m.heightScale > 0.08f)
+            note << " (outside Unity's 0.005 to 0.08 slider: type it in, or expect a different "
+                    "depth)";
+        note << "\n";
+    }
+    return job.text(job.stem + "_Unity.txt", note.str());
+}
+
+} // namespace px::exporter

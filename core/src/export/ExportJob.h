@@ -1,0 +1,65 @@
+#pragma once
+// One export in progress: the material, its loaded maps, the staging folder, and the helpers
+// every target's writer uses.
+
+#include "parallax/export/ExportFolder.h"
+#include "parallax/export/Exporter.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace px::exporter {
+
+struct ExportJob {
+    const Material& material;
+    const ExportOptions& options;
+    MaterialAssets assets;
+    ExportFolder& folder;
+    ExportResult& result;
+    std::string stem;         // the material's name made safe for file names
+    std::string materialFile; // map paths are relative to its folder
+
+    // Writes into the export folder and records the file. Errors name the file.
+    Status image(const std::string& name, const Image& image, PixelFormat format,
+                 bool srgb = false);
+    Status text(const std::string& name, std::string_view contents);
+
+    // "STEM_height.png" (16-bit) or "STEM_height.exr" (float), as the options say.
+    std::string heightName(const std::string& base) const;
+
+    // The normal map a target without height-derived normals needs, in `green`: the loaded map
+    // converted, or one baked from the height map at the material's scale. Empty when the
+    // material has neither (adds a note then).
+    Result<Image> normals(NormalGreen green);
+
+    // Occlusion (R), roughness (G), metallic (B) packed as glTF, Godot and Unreal read them;
+    // a channel without a map holds the material's constant (occlusion: 1). nullopt when the
+    // material has none of the three maps.
+    std::optional<Image> orm() const;
+
+    // The cone map of `kind`: the loaded one, or baked from the height map (with a note).
+    ConeMap cones(ConeKind kind);
+};
+
+// The float as the shortest decimal that reads back to it (0.6f prints "0.6", not 0.60000002).
+double decimal(float value);
+std::string formatDecimal(float value); // "0.05"
+
+// A file name stem from a material name: letters, digits, '-' and '_' kept, the rest '_'.
+std::string fileStem(const std::string& name);
+
+// Adds the material's specialised fragment shader to a package (and its line to `files`).
+Status writePackageShader(ExportJob& job, const Material& packaged,
+                          std::vector<std::pair<std::string, std::string>>& files);
+
+// The writers, one per target (PackageExport.cpp, GltfExport.cpp, ...).
+Status writePackage(ExportJob& job);
+Status writeGltf(ExportJob& job);
+Status writeGodot(ExportJob& job);
+Status writeUnreal(ExportJob& job);
+Status writeUnity(ExportJob& job);
+
+} // namespace px::exporter

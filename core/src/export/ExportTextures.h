@@ -1,0 +1,41 @@
+#pragma once
+// Turning a material's maps into the textures a target expects: bit depth, green convention,
+// channel packing, cone maps quantised downwards.
+
+#include "parallax/bake/ConeMap.h"
+#include "parallax/heightfield/HeightField.h"
+#include "parallax/heightfield/WrapMode.h"
+#include "parallax/image/Image.h"
+#include "parallax/material/Material.h"
+
+#include <optional>
+
+namespace px::exporter {
+
+// One channel: h (white = high), or 1 - h for a target told to read a depth map.
+Image heightImage(const HeightField& field, bool asDepth);
+
+// R, G, B of a loaded normal map with green flipped (1 - G) when the conventions differ; an
+// alpha channel is dropped (no engine reads one there).
+Image normalImage(const Image& normals, NormalGreen from, NormalGreen to);
+
+// R = height, G = sqrt(cone ratio) rounded *down* to the steps of `bits` (8 or 16; 32: float,
+// kept) so a stored cone is never wider than the baked one (CONVENTIONS §4).
+Image coneImage(const HeightField& field, const ConeMap& cone, int bits);
+
+// Bilinear resampling between texel centres, with the material's wrap mode at the edges.
+Image resample(const Image& image, int width, int height, WrapMode wrap);
+
+// Where one channel of a packed texture comes from: a channel of a map, or a constant.
+struct ChannelSource {
+    const Image* image = nullptr; // empty or null: use `constant`
+    int channel = 0;
+    bool invert = false; // 1 - value (smoothness from roughness)
+    float constant = 0.0f;
+};
+
+// A `channels`-channel texture (up to 4), each channel from its source, every map resampled to
+// the largest size among them. nullopt when no source has an image (nothing to pack).
+std::optional<Image> packChannels(const ChannelSource* sources, int channels, WrapMode wrap);
+
+} // namespace px::exporter

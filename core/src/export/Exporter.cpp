@@ -1,0 +1,172 @@
+// exportMaterial: load what the target needs, write it through the target's writer into a
+// staging folder, swap the folder into place.
+
+#include "parallax/export/Exporter.h"
+
+#include "ExportJob.h"
+#include "ExportTextures.h"
+#include "parallax/bake/ConeMapBaker.h"
+#include "parallax/bake/NormalMapBaker.h"
+#include "parallax/io/AtomicWrite.h"
+#include "parallax/material/MaterialFile.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace px {
+
+namespace exporter {
+
+std::string fileStem(const std::string& name) {
+    std::string stem;
+    for (const char c : name) {
+        const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                          (c >= '0' && c <= '9') || c == '-' || c == '_';
+        stem += keep ? c : '_';
+    }
+    return stem.empty() ? "material" : stem;
+}
+
+double decimal(float value) {
+    char buffer[32];
+    for (int precision = 6; precision <= 9; ++precision) {
+        std::snprintf(buffer, sizeof buffer, "%.*g", precision, static_cast<double>(value));
+        if (std::strtof(buffer, nullptr) == value)
+            break;
+    }
+    return std::strtod(buffer, nullptr);
+}
+
+std::string formatDecimal(float value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", decimal(value));
+    return buffer;
+}
+
+Status ExportJob::image(const std::string& name, const Image& pixels, PixelFormat format,
+                        bool srgb) {
+    ImageWriteOptions write;
+    write.format = format;
+    write.srgb = srgb;
+    if (Status s = writeImage(folder.pathFor(name), pixels, write); !s)
+        return s;
+    folder.add(name);
+    return success();
+}
+
+Status ExportJob::text(const std::string& name, std::string_view contents) {
+    if (Status s = writeTextFile(folder.pathFor(name), contents); !s)
+        return s;
+    folder.add(name);
+    return success();
+}
+
+std::string ExportJob::heightName(const std::string& base) const {
+    return base +
+           (options.heightFormat == PixelFormat::Float || options.heightFormat == PixelFormat::Half
+                ? ".exr"
+                : ".png");
+}
+
+Result<Image> ExportJob::normals(NormalGreen green) {
+    if (!assets.normal.empty())
+        return convertNormalMap(assets.normal, material.normalGreen, green,
+                                resolveMapPath(materialFile, material.maps.normal));
+    if (assets.height.empty()) {
+        result.notes.push_back("no normal map: the material has neither a normal map nor a "
+                               "height map to bake one from");
+        return Image{};
+    }
+    NormalBakeOptions bake;
+    bake.heightScale = material.heightScale;
+    bake.filter = material.normalSource == NormalSource::HeightCentral ? NormalFilter::Central
+                                                                       : NormalFilter::Sobel;
+    bake.wrap = material.wrap;
+    bake.green = green;
+    result.notes.push_back("normal map baked from the height map (" +
+                           std::string(toString(bake.filter)) + ", height scale " +
+                           formatDecimal(material.heightScale) + ", " +
+                           (green == NormalGreen::OpenGL ? "OpenGL Y+" : "DirectX Y-") + ")");
+    return bakeNormalMap(assets.height, bake);
+}
+
+std::optional<Image> ExportJob::orm() const {
+    const ChannelSource sources[3] = {{&assets.ao, 0, false, 1.0f},
+                                      {&assets.roughness, 0, false, material.roughness},
+                                      {&assets.metallic, 0, false, material.metallic}};
+    return packChannels(sources, 3, material.wrap);
+}
+
+ConeMap ExportJob::cones(ConeKind kind) {
+    const ConeMap& loaded = kind == ConeKind::Conservative ? assets.cone : assets.relaxedCone;
+    if (!loaded.sqrtRatio.empty())
+        return loaded;
+    result.notes.push_back(std::string(kind == ConeKind::Conservative ? "cone" : "relaxed cone") +
+                           " map baked from the height map (the material has none)");
+    return bakeConeMap(assets.height, material.wrap, kind);
+}
+
+} // namespace exporter
+
+namespace {
+
+// The maps each target reads from the material.
+MapSet mapsFor(const Material& m, ExportFormat format) {
+    if (format == ExportFormat::Package)
+        return mapsUsed(m);
+    // Engines shade with their own model: colour, normals (loaded or baked from height),
+    // occlusion/roughness/metallic when there are files, height for their parallax.
+    MapSet set = mapsPresent(m.maps);
+    set.cone = set.relaxedCone = false;
+    return set;
+}
+
+} // namespace
+
+Result<ExportResult> exportMaterial(const Material& material, const std::string& materialFile,
+                                    const ExportOptions& options) {
+    if (std::vector<MaterialProblem> problems = validateMaterial(material); !problems.empty())
+        return Error{formatProblems(problems, materialFile.empty() ? material.name : materialFile)};
+    // Everything that can fail on the input fails before the output folder is touched.
+    Result<MaterialAssets> assets =
+        loadMaterialAssets(material, materialFile, mapsFor(material, options.format), options.load);
+    if (!assets)
+        return assets.error();
+    Result<ExportFolder> folder = ExportFolder::begin(options.outDir, options.force);
+    if (!folder)
+        return folder.error();
+
+    ExportResult result;
+    exporter::ExportJob job{material,    options, std::move(*assets),
+                            *folder,     result,  exporter::fileStem(material.name),
+                            materialFile};
+    Status written = success();
+    switch (options.format) {
+    case ExportFormat::Package:
+        written = exporter::writePackage(job);
+        break;
+    case ExportFormat::Gltf:
+        written = exporter::writeGltf(job);
+        break;
+    case ExportFormat::Godot:
+        written = exporter::writeGodot(job);
+        break;
+    case ExportFormat::Unreal:
+        written = exporter::writeUnreal(job);
+        break;
+    case ExportFormat::Unity:
+        written = exporter::writeUnity(job);
+        break;
+    }
+    if (!written)
+        return written.error(); // the staging folder goes with `folder`
+    Result<std::vector<std::string>> files = folder->commit(
+        "export --format " + std::string(toString(options.format)) + " of " + material.name);
+    if (!files)
+        return files.error();
+    result.folder = folder->target().string();
+    result.files = std::move(*files);
+    return result;
+}
+
+} // namespace px

@@ -1,0 +1,175 @@
+// glTF 2.0: one textured plane with a metallic-roughness material. The height parameters (the
+// whole Parallax Studio material, maps renamed to the exported files) ride in the material's
+// extras, where glTF keeps application data.
+
+#include "ExportJob.h"
+#include "ExportTextures.h"
+#include "parallax/Version.h"
+#include "parallax/material/MaterialFile.h"
+
+#include <array>
+#include <cstring>
+#include <nlohmann/json.hpp>
+
+namespace px::exporter {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr int kFloat = 5126;
+constexpr int kUnsignedShort = 5123;
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+
+// A 1 m plane in XZ facing +Y; u along +X, v along +Z (v grows down the image, glTF §3.7.2.1),
+// so the bitangent cross(N, T) * w = -Z points up the image with w = +1, as glTF's normal maps
+// (green up) need.
+struct PlaneMesh {
+    std::string bytes;
+    Json bufferViews = Json::array();
+    Json accessors = Json::array();
+
+    template <std::size_t N>
+    void add(const std::array<float, N>& values, int components, const char* type,
+             bool bounds = false) {
+        const std::size_t offset = bytes.size();
+        bytes.append(reinterpret_cast<const char*>(values.data()), sizeof(float) * N);
+        bufferViews.push_back({{"buffer", 0},
+                               {"byteOffset", offset},
+                               {"byteLength", sizeof(float) * N},
+                               {"target", kArrayBuffer}});
+        Json accessor = {{"bufferView", bufferViews.size() - 1},
+                         {"componentType", kFloat},
+                         {"count", N / components},
+                         {"type", type}};
+        if (bounds) {
+            Json lo = Json::array(), hi = Json::array();
+            for (int c = 0; c < components; ++c) {
+                float a = values[c], b = values[c];
+                for (std::size_t i = c; i < N; i += components) {
+                    a = std::min(a, values[i]);
+                    b = std::max(b, values[i]);
+                }
+                lo.push_back(a);
+                hi.push_back(b);
+            }
+            accessor["min"] = lo;
+            accessor["max"] = hi;
+        }
+        accessors.push_back(accessor);
+    }
+
+    explicit PlaneMesh(float tiling) {
+        add(std::array<float, 12>{-0.5f, 0, -0.5f, 0.5f, 0, -0.5f, 0.5f, 0, 0.5f, -0.5f, 0, 0.5f},
+            3, "VEC3", true);
+        add(std::array<float, 12>{0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0}, 3, "VEC3");
+        add(std::array<float, 16>{1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1}, 4, "VEC4");
+        add(std::array<float, 8>{0, 0, tiling, 0, tiling, tiling, 0, tiling}, 2, "VEC2");
+        const std::array<unsigned short, 6> indices{0, 2, 1, 0, 3, 2}; // counter-clockwise from +Y
+        const std::size_t offset = bytes.size();
+        bytes.append(reinterpret_cast<const char*>(indices.data()), sizeof indices);
+        bufferViews.push_back({{"buffer", 0},
+                               {"byteOffset", offset},
+                               {"byteLength", sizeof indices},
+                               {"target", kElementArrayBuffer}});
+        accessors.push_back({{"bufferView", bufferViews.size() - 1},
+                             {"componentType", kUnsignedShort},
+                             {"count", indices.size()},
+                             {"type", "SCALAR"}});
+    }
+};
+
+} // namespace
+
+Status writeGltf(ExportJob& job) {
+    const Material& m = job.material;
+    Json images = Json::array(), textures = Json::array();
+    auto texture = [&](const std::string& name) {
+        images.push_back({{"uri", name}, {"mimeType", "image/png"}});
+        textures.push_back({{"sampler", 0}, {"source", images.size() - 1}});
+        return Json{{"index", textures.size() - 1}};
+    };
+
+    Json pbr = Json::object();
+    pbr["baseColorFactor"] = {1.0, 1.0, 1.0, 1.0};
+    Json material = {{"name", m.name}};
+    if (!job.assets.albedo.empty()) {
+        const std::string name = job.stem + "_basecolor.png";
+        if (Status s = job.image(name, job.assets.albedo, PixelFormat::UInt8, true); !s)
+            return s;
+        pbr["baseColorTexture"] = texture(name);
+    }
+    const std::optional<Image> orm = job.orm();
+    pbr["metallicFactor"] = orm ? 1.0 : decimal(m.metallic);
+    pbr["roughnessFactor"] = orm ? 1.0 : decimal(m.roughness);
+    if (orm) {
+        const std::string name = job.stem + "_orm.png";
+        if (Status s = job.image(name, *orm, PixelFormat::UInt8); !s)
+            return s;
+        pbr["metallicRoughnessTexture"] = texture(name);
+        if (!job.assets.ao.empty()) // glTF reads occlusion from R of the same texture
+            material["occlusionTexture"] = {{"index", textures.size() - 1}};
+    }
+    material["pbrMetallicRoughness"] = pbr;
+    Result<Image> normals = job.normals(NormalGreen::OpenGL);
+    if (!normals)
+        return normals.error();
+    if (!normals->empty()) {
+        const std::string name = job.stem + "_normal.png";
+        if (Status s = job.image(name, *normals, job.options.normalFormat); !s)
+            return s;
+        material["normalTexture"] = texture(name);
+    }
+
+    // The parallax settings: the project's own material, maps renamed to the exported files.
+    Material extras = m;
+    extras.maps = {};
+    extras.heightChannel = HeightChannel::Red;
+    extras.heightIsDepth = false;
+    extras.normalGreen = NormalGreen::OpenGL;
+    if (info(m.technique).parallax) {
+        const std::string name = job.heightName(job.stem + "_height");
+        if (Status s =
+                job.image(name, heightImage(job.assets.height, false), job.options.heightFormat);
+            !s)
+            return s;
+        extras.maps.height = name;
+    }
+    extras.maps.albedo = pbr.contains("baseColorTexture") ? job.stem + "_basecolor.png" : "";
+    extras.maps.normal = material.contains("normalTexture") ? job.stem + "_normal.png" : "";
+    if (extras.normalSource == NormalSource::Map && extras.maps.normal.empty())
+        extras.normalSource = NormalSource::HeightCentral;
+    material["extras"] = {{"parallaxStudio", Json::parse(materialToJson(extras))}};
+
+    const PlaneMesh plane(m.tiling);
+    const std::string binName = job.stem + ".bin";
+    if (Status s = job.text(binName, plane.bytes); !s)
+        return s;
+    const int wrap = m.wrap == WrapMode::Repeat ? 10497 : 33071;
+    Json gltf = {
+        {"asset", {{"version", "2.0"}, {"generator", std::string("Parallax Studio ") + kVersion}}},
+        {"scene", 0},
+        {"scenes", {{{"name", m.name}, {"nodes", {0}}}}},
+        {"nodes", {{{"name", m.name}, {"mesh", 0}}}},
+        {"meshes",
+         {{{"name", m.name + " plane"},
+           {"primitives",
+            {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TANGENT", 2}, {"TEXCOORD_0", 3}}},
+              {"indices", 4},
+              {"material", 0}}}}}}},
+        {"materials", {material}},
+        {"buffers", {{{"uri", binName}, {"byteLength", plane.bytes.size()}}}},
+        {"bufferViews", plane.bufferViews},
+        {"accessors", plane.accessors},
+    };
+    if (!textures.empty()) {
+        gltf["samplers"] = {
+            {{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", wrap}, {"wrapT", wrap}}};
+        gltf["images"] = images;
+        gltf["textures"] = textures;
+    }
+    return job.text(job.stem + ".gltf", gltf.dump(2) + "\n");
+}
+
+} // namespace px::exporter

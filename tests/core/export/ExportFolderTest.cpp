@@ -1,0 +1,121 @@
+// The export folder: built beside the target and swapped in whole; never replaces a folder
+// without --force, nor a folder of someone else's files even with it.
+
+#include "parallax/export/ExportFolder.h"
+
+#include "parallax/io/AtomicWrite.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace px;
+namespace fs = std::filesystem;
+
+class ExportFolderTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init() {
+        m_dir.reset(new QTemporaryDir);
+        QVERIFY(m_dir->isValid());
+    }
+    void createsParentsAndCommits();
+    void abandonedExportLeavesNothing();
+    void existingFolderNeedsForce();
+    void forceReplacesAPreviousExport();
+    void forceNeverReplacesForeignFiles();
+    void emptyFolderIsReplacedWithoutForce();
+    void fileInTheWayRefused();
+
+private:
+    fs::path path(const char* name) const { return fs::path(m_dir->path().toStdString()) / name; }
+    // Every entry of the temporary folder, hidden ones included.
+    QStringList entries() const {
+        QStringList list;
+        for (const auto& e : fs::directory_iterator(m_dir->path().toStdString()))
+            list << QString::fromStdString(e.path().filename().string());
+        list.sort();
+        return list;
+    }
+    std::unique_ptr<QTemporaryDir> m_dir;
+};
+
+void ExportFolderTest::createsParentsAndCommits() {
+    Result<ExportFolder> folder = ExportFolder::begin(path("a/b/out/"), false);
+    QVERIFY2(folder.ok(), folder.ok() ? "" : folder.error().message.c_str());
+    QVERIFY(!fs::exists(path("a/b/out"))); // nothing visible until commit
+    QVERIFY(writeTextFile(folder->pathFor("x.txt"), "x").ok());
+    folder->add("x.txt");
+    Result<std::vector<std::string>> files = folder->commit("test");
+    QVERIFY(files.ok());
+    QCOMPARE(files->size(), std::size_t(1));
+    QCOMPARE(*readTextFile(path("a/b/out/x.txt").string()), std::string("x"));
+    const std::string marker = *readTextFile((path("a/b/out") / kExportMarker).string());
+    QVERIFY(marker.find("test\nx.txt\n") != std::string::npos);
+    QCOMPARE(entries(), QStringList{"a"});
+    QCOMPARE(std::distance(fs::directory_iterator(path("a/b")), fs::directory_iterator()), 1);
+}
+
+void ExportFolderTest::abandonedExportLeavesNothing() {
+    {
+        Result<ExportFolder> folder = ExportFolder::begin(path("out"), false);
+        QVERIFY(folder.ok());
+        QVERIFY(writeTextFile(folder->pathFor("half.txt"), "x").ok());
+    } // an error path: never committed
+    QVERIFY(entries().isEmpty());
+}
+
+void ExportFolderTest::existingFolderNeedsForce() {
+    fs::create_directories(path("out"));
+    QVERIFY(writeTextFile(path("out/mine.txt").string(), "keep").ok());
+    Result<ExportFolder> folder = ExportFolder::begin(path("out"), false);
+    QVERIFY(!folder.ok());
+    QCOMPARE(QString::fromStdString(folder.error().message),
+             QString::fromStdString(path("out").string() +
+                                    ": already exists; use --force to replace it"));
+    QCOMPARE(*readTextFile(path("out/mine.txt").string()), std::string("keep"));
+    QCOMPARE(entries(), QStringList{"out"});
+}
+
+void ExportFolderTest::forceReplacesAPreviousExport() {
+    for (const char* name : {"first.txt", "second.txt"}) {
+        Result<ExportFolder> folder = ExportFolder::begin(path("out"), true);
+        QVERIFY2(folder.ok(), folder.ok() ? "" : folder.error().message.c_str());
+        QVERIFY(writeTextFile(folder->pathFor(name), name).ok());
+        folder->add(name);
+        QVERIFY(folder->commit("test").ok());
+    }
+    QVERIFY(!fs::exists(path("out/first.txt"))); // replaced whole, not merged
+    QVERIFY(fs::exists(path("out/second.txt")));
+    QCOMPARE(entries(), QStringList{"out"}); // no staging or old folder left
+}
+
+void ExportFolderTest::forceNeverReplacesForeignFiles() {
+    fs::create_directories(path("photos"));
+    QVERIFY(writeTextFile(path("photos/holiday.jpg").string(), "precious").ok());
+    Result<ExportFolder> folder = ExportFolder::begin(path("photos"), true);
+    QVERIFY(!folder.ok());
+    QVERIFY2(folder.error().message.find("holds files that no export wrote") != std::string::npos,
+             folder.error().message.c_str());
+    QCOMPARE(*readTextFile(path("photos/holiday.jpg").string()), std::string("precious"));
+}
+
+void ExportFolderTest::emptyFolderIsReplacedWithoutForce() {
+    fs::create_directories(path("out"));
+    Result<ExportFolder> folder = ExportFolder::begin(path("out"), false);
+    QVERIFY(folder.ok());
+    QVERIFY(writeTextFile(folder->pathFor("x.txt"), "x").ok());
+    folder->add("x.txt");
+    QVERIFY(folder->commit("test").ok());
+    QVERIFY(fs::exists(path("out/x.txt")));
+}
+
+void ExportFolderTest::fileInTheWayRefused() {
+    QVERIFY(writeTextFile(path("out").string(), "a file").ok());
+    Result<ExportFolder> folder = ExportFolder::begin(path("out"), true);
+    QVERIFY(!folder.ok());
+    QVERIFY(folder.error().message.find("exists and is not a folder") != std::string::npos);
+}
+
+QTEST_GUILESS_MAIN(ExportFolderTest)
+#include "ExportFolderTest.moc"
