@@ -44,11 +44,13 @@ struct TraceKernel {
 #include "trace/cone_relaxed.glsl"
 #include "trace/exact.glsl"
 #include "trace/march.glsl"
+#include "trace/normals.glsl"
 #include "trace/offset.glsl"
 #include "trace/pom.glsl"
 #include "trace/pyramid.glsl"
 #include "trace/relief.glsl"
 #include "trace/secant.glsl"
+#include "trace/shadow.glsl"
 #include "trace/steep.glsl"
 #include "trace/walk.glsl"
 };

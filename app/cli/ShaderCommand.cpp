@@ -1,0 +1,149 @@
+// parallax-cli shader: the specialised shader of a material or a feature set, or every variant.
+
+#include "Cli.h"
+#include "parallax/io/AtomicWrite.h"
+#include "parallax/material/MaterialFile.h"
+#include "parallax/shader/ShaderGenerator.h"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace px::cli {
+
+namespace {
+
+struct ShaderOptions {
+    std::string material;
+    std::string technique = "pom";
+    bool shadow = false;
+    bool normalMap = false;
+    std::string normalSource;
+    bool albedo = false;
+    bool orm = false;
+    std::string wrap = "repeat";
+    std::string lighting = "blinn-phong";
+    bool derivativeTbn = false;
+    std::string output = "color";
+    std::string stage = "fragment";
+    std::string out;
+    bool list = false;
+    std::string dumpAll;
+};
+
+Result<VariantKey> keyFrom(const ShaderOptions& o) {
+    const ShaderOutput output = o.output == "trace"     ? ShaderOutput::Trace
+                                : o.output == "surface" ? ShaderOutput::Surface
+                                                        : ShaderOutput::Color;
+    if (!o.material.empty()) {
+        Result<Material> material = loadMaterial(o.material);
+        if (!material)
+            return material.error();
+        return variantFor(*material, output);
+    }
+    VariantKey k;
+    k.technique = *parseTechnique(o.technique);
+    k.shadow = o.shadow;
+    k.normalSource = o.normalMap ? NormalSource::Map : NormalSource::HeightCentral;
+    if (!o.normalSource.empty())
+        k.normalSource = *shader::parseNormalSource(o.normalSource);
+    k.albedoMap = o.albedo;
+    k.surfaceMap = o.orm;
+    k.wrap = *parseWrapMode(o.wrap);
+    k.lighting = *shader::parseLightingModel(o.lighting);
+    k.tbn = o.derivativeTbn ? TbnSource::Derivatives : TbnSource::VertexTangents;
+    k.output = output;
+    if (Status s = k.validate(); !s)
+        return s.error();
+    return canonical(k);
+}
+
+int dumpAll(const std::string& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec)
+        return fail(dir + ": cannot create the folder (" + ec.message() + ")");
+    int count = 0;
+    for (const VariantKey& key : allVariants()) {
+        Result<GeneratedProgram> program = generateProgram(key);
+        if (!program)
+            return fail(key.name() + ": " + program.error().message);
+        const std::string base = (std::filesystem::path(dir) / key.name()).string();
+        if (Status s = writeTextFile(base + ".frag", program->fragment.text); !s)
+            return fail(s.error().message);
+        if (Status s = writeTextFile(base + ".vert", program->vertex.text); !s)
+            return fail(s.error().message);
+        ++count;
+    }
+    std::cout << "wrote " << count << " variants (" << 2 * count << " files) to " << dir << "\n";
+    return 0;
+}
+
+int runShader(const ShaderOptions& o) {
+    if (o.list) {
+        for (const VariantKey& key : allVariants())
+            std::cout << key.name() << "\n";
+        return 0;
+    }
+    if (!o.dumpAll.empty())
+        return dumpAll(o.dumpAll);
+    if (o.out.empty())
+        return fail("--out is required (or --list, or --dump-all DIR)");
+    Result<VariantKey> key = keyFrom(o);
+    if (!key)
+        return fail(key.error().message);
+    Result<GeneratedProgram> program = generateProgram(*key);
+    if (!program)
+        return fail(program.error().message);
+    const std::string& text = o.stage == "vertex" ? program->vertex.text : program->fragment.text;
+    if (o.out == "-") {
+        std::cout << text;
+        return 0;
+    }
+    if (Status s = writeTextFile(o.out, text); !s)
+        return fail(s.error().message);
+    return 0;
+}
+
+} // namespace
+
+Action addShaderCommand(CLI::App& app) {
+    auto o = std::make_shared<ShaderOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "shader",
+        "Write the shader specialised for a material or a feature set (or every variant)");
+    auto* material = cmd->add_option("--material", o->material, "Material file (.json)");
+    std::vector<std::string> techniques;
+    for (const TechniqueInfo& t : allTechniques())
+        techniques.emplace_back(t.name);
+    std::vector<CLI::Option*> features{
+        cmd->add_option("--technique", o->technique, "Technique (default pom)")
+            ->check(CLI::IsMember(techniques)),
+        cmd->add_flag("--shadow", o->shadow, "Soft self-shadowing towards the light"),
+        cmd->add_flag("--normal-map", o->normalMap, "Shading normals from a normal map"),
+        cmd->add_option("--normal-source", o->normalSource,
+                        "Shading normals: none, map, central (4 taps of height), sobel (8 taps)")
+            ->check(CLI::IsMember({"none", "map", "central", "sobel"})),
+        cmd->add_flag("--albedo", o->albedo, "An albedo map"),
+        cmd->add_flag("--orm", o->orm, "An occlusion/roughness/metallic map"),
+        cmd->add_option("--wrap", o->wrap, "Wrap mode")->check(CLI::IsMember({"repeat", "clamp"})),
+        cmd->add_option("--lighting", o->lighting, "Lighting model")
+            ->check(CLI::IsMember({"blinn-phong", "metallic-roughness"})),
+        cmd->add_flag("--derivative-tbn", o->derivativeTbn,
+                      "Tangent frame from screen-space derivatives (meshes without tangents)"),
+    };
+    for (CLI::Option* f : features)
+        material->excludes(f);
+    cmd->add_option("--output", o->output,
+                    "What the shader writes: color, surface (u, v, t, fetches per pixel) or trace "
+                    "(the canonical trace scene)")
+        ->check(CLI::IsMember({"color", "surface", "trace"}));
+    cmd->add_option("--stage", o->stage, "Which stage to write")
+        ->check(CLI::IsMember({"fragment", "vertex"}));
+    cmd->add_option("--out", o->out, "Output file (.frag/.vert); - for standard output");
+    cmd->add_flag("--list", o->list, "List every variant's name");
+    cmd->add_option("--dump-all", o->dumpAll, "Write every variant's two stages into this folder");
+    return [o] { return runShader(*o); };
+}
+
+} // namespace px::cli

@@ -1,0 +1,60 @@
+#pragma once
+// Generates the GLSL 4.30 core program of a variant from shaders/ (embedded at build time).
+// The variant's defines (PX_HAS_<FEATURE>, PX_TECHNIQUE_<NAME>, only for what is on) resolve the
+// #if blocks; then only the functions, structs and globals reachable from main() are kept, and
+// only the uniforms and samplers that kept code reads are declared. So each variant carries
+// exactly the code, samplers and uniforms it uses. Every kept snippet is preceded by
+// `#line LINE SOURCE`, SOURCE indexing GeneratedShader::sources, so compiler errors point at the
+// file in shaders/ (mapCompilerLog() rewrites them to "file:line").
+
+#include "parallax/Result.h"
+#include "parallax/shader/VariantKey.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace px {
+
+// Texture units, fixed per sampler (layout(binding = N) in the generated code).
+namespace TextureUnit {
+inline constexpr int Height = 0;     // R16 or R32F height map, mipmapped
+inline constexpr int Cone = 1;       // RG32F: height, sqrt(cone ratio)
+inline constexpr int MaxMip = 2;     // R32F max-mip pyramid atlas
+inline constexpr int Albedo = 3;     // linear RGBA (sRGB decoded on upload)
+inline constexpr int Normal = 4;     // tangent-space normal map, +Y up
+inline constexpr int Orm = 5;        // occlusion, roughness, metallic
+inline constexpr int RayOrigins = 6; // RG32F uv0 per ray (trace output)
+} // namespace TextureUnit
+
+// Levels the max-mip atlas row table holds (a 2^31 texel side would need 32).
+inline constexpr int kMaxMipAtlasLevels = 32;
+
+struct ShaderUniform {
+    std::string name;
+    std::string type; // GLSL type: "sampler2D", "float", "int[32]", ...
+    int unit = -1;    // samplers: the texture unit
+};
+
+struct GeneratedShader {
+    std::string text;
+    std::vector<std::string> sources;    // #line source numbers: 0 is the generated header
+    std::vector<ShaderUniform> uniforms; // declared, each read by the kept code
+    std::vector<std::string> defines;    // the PX_ defines that are on
+};
+
+struct GeneratedProgram {
+    VariantKey key;
+    GeneratedShader vertex;
+    GeneratedShader fragment;
+};
+
+// Fails for an invalid key (with isValid()'s sentence) or a malformed shader file (naming it and
+// the line). The key is canonicalised first.
+Result<GeneratedProgram> generateProgram(const VariantKey& key);
+
+// Rewrites the "SOURCE:LINE" / "SOURCE(LINE)" positions of a GLSL compiler log (Mesa, glslang,
+// NVIDIA) into "shaders/FILE:LINE".
+std::string mapCompilerLog(std::string_view log, const std::vector<std::string>& sources);
+
+} // namespace px

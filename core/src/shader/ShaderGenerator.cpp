@@ -1,0 +1,179 @@
+#include "parallax/shader/ShaderGenerator.h"
+
+#include "GlslUnit.h"
+#include "ShaderBindings.h"
+#include "ShaderFiles.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <regex>
+#include <set>
+
+namespace px {
+
+namespace {
+
+// The library every stage may draw from, in declaration order (as TraceKernel.h includes the
+// kernels); the stage's main file comes last. Unreachable items are dropped.
+const std::vector<std::string>& libraryFiles() {
+    static const std::vector<std::string> files{
+        "render/bindings.glsl",    "trace/common.glsl",      "trace/walk.glsl",
+        "trace/exact.glsl",        "trace/offset.glsl",      "trace/march.glsl",
+        "trace/steep.glsl",        "trace/pom.glsl",         "trace/relief.glsl",
+        "trace/secant.glsl",       "trace/cone.glsl",        "trace/cone_conservative.glsl",
+        "trace/cone_relaxed.glsl", "trace/pyramid.glsl",     "trace/shadow.glsl",
+        "trace/normals.glsl",      "render/techniques.glsl", "render/lighting.glsl",
+    };
+    return files;
+}
+
+std::string macroName(std::string_view name) {
+    std::string m;
+    for (char c : name)
+        m += c == '-' ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return m;
+}
+
+std::vector<std::string> definesFor(const VariantKey& k) {
+    std::vector<std::string> d;
+    d.push_back("PX_TECHNIQUE_" + macroName(info(k.technique).name));
+    auto on = [&](bool bit, const char* name) {
+        if (bit)
+            d.emplace_back(name);
+    };
+    on(info(k.technique).parallax, "PX_HAS_PARALLAX");
+    on(k.readsHeightMap(), "PX_HAS_HEIGHT_MAP");
+    on(k.shadow, "PX_HAS_SHADOW");
+    on(k.normalSource == NormalSource::Map, "PX_HAS_NORMAL_MAP");
+    on(k.normalSource == NormalSource::HeightCentral || k.normalSource == NormalSource::HeightSobel,
+       "PX_HAS_HEIGHT_NORMALS");
+    on(k.normalSource == NormalSource::HeightSobel, "PX_HAS_SOBEL_NORMALS");
+    on(k.albedoMap, "PX_HAS_ALBEDO_MAP");
+    on(k.surfaceMap, "PX_HAS_SURFACE_MAP");
+    on(k.wrap == WrapMode::Clamp, "PX_HAS_CLAMP_WRAP");
+    on(k.lighting == LightingModel::MetallicRoughness, "PX_HAS_METALLIC_ROUGHNESS");
+    on(k.tbn == TbnSource::Derivatives, "PX_HAS_DERIVATIVE_TBN");
+    on(k.output == ShaderOutput::Surface, "PX_HAS_SURFACE_OUTPUT");
+    on(k.output == ShaderOutput::Trace, "PX_HAS_TRACE_OUTPUT");
+    return d;
+}
+
+Result<GeneratedShader> generateStage(const VariantKey& key,
+                                      const std::vector<std::string>& defines,
+                                      const std::vector<std::string>& files, const char* stage) {
+    GeneratedShader s;
+    s.defines = defines;
+    s.sources.push_back("(generated header)");
+    const std::set<std::string> defineSet(defines.begin(), defines.end());
+    std::vector<shader::GlslItem> items;
+    for (std::size_t k = 0; k < files.size(); ++k) {
+        const std::string path = "shaders/" + files[k];
+        const std::optional<std::string_view> text = shader::embeddedFile(files[k]);
+        if (!text)
+            return Error{path + ": not among the embedded shader files (rebuild after adding it)"};
+        Result<std::string> pre = shader::preprocess(*text, defineSet, path);
+        if (!pre)
+            return pre.error();
+        Result<std::vector<shader::GlslItem>> split =
+            shader::splitItems(*pre, static_cast<int>(k + 1), path);
+        if (!split)
+            return split.error();
+        std::move(split->begin(), split->end(), std::back_inserter(items));
+        s.sources.push_back(path);
+    }
+    std::set<std::string> external;
+    const std::vector<const shader::GlslItem*> kept =
+        shader::reachableItems(items, {"main"}, external);
+    if (external.count("main"))
+        return Error{"shaders/" + files.back() + ": no main()"};
+
+    char keyHex[16];
+    std::snprintf(keyHex, sizeof keyHex, "0x%04x", key.bits());
+    std::string text = "#version 430 core\n";
+    text += "// Parallax Studio shader variant " + key.name() + " (key " + keyHex + "), " + stage +
+            " stage.\n// Generated from shaders/ by core/src/shader/ShaderGenerator.cpp: only the "
+            "code this variant reaches.\n// #line source numbers:\n";
+    std::set<int> used;
+    for (const shader::GlslItem* item : kept)
+        used.insert(item->file);
+    for (int k : used)
+        text += "//   " + std::to_string(k) + " " + s.sources[static_cast<std::size_t>(k)] + "\n";
+    for (const std::string& d : defines)
+        text += "#define " + d + " 1\n";
+    for (const shader::Binding& b : shader::bindings()) {
+        if (external.count(b.name)) {
+            text += shader::declaration(b) + "\n";
+            s.uniforms.push_back({b.name, b.type, b.unit});
+        }
+    }
+    if (external.count("pxWrapRepeat"))
+        text += std::string("const bool pxWrapRepeat = ") +
+                (key.wrap == WrapMode::Repeat ? "true" : "false") + ";\n";
+
+    int file = 0;
+    int nextLine = -1;
+    for (const shader::GlslItem* item : kept) {
+        const int gap = item->firstLine - nextLine;
+        if (item->file == file && gap > 0 && gap <= 3)
+            text.append(static_cast<std::size_t>(gap), '\n'); // keep the file's blank lines
+        else if (item->file != file || gap != 0)
+            text += "#line " + std::to_string(item->firstLine) + " " + std::to_string(item->file) +
+                    "\n";
+        text += item->text;
+        file = item->file;
+        nextLine = item->firstLine +
+                   static_cast<int>(std::count(item->text.begin(), item->text.end(), '\n'));
+    }
+    s.text = std::move(text);
+    return s;
+}
+
+} // namespace
+
+Result<GeneratedProgram> generateProgram(const VariantKey& requested) {
+    const VariantKey key = canonical(requested);
+    if (Status valid = key.validate(); !valid)
+        return valid.error();
+    const std::vector<std::string> defines = definesFor(key);
+    const bool trace = key.output == ShaderOutput::Trace;
+
+    GeneratedProgram program;
+    program.key = key;
+    Result<GeneratedShader> vertex = generateStage(
+        key, defines, {trace ? "render/trace.vert.glsl" : "render/surface.vert.glsl"}, "vertex");
+    if (!vertex)
+        return vertex.error();
+    std::vector<std::string> files = libraryFiles();
+    files.push_back(trace ? "render/trace.frag.glsl" : "render/surface.frag.glsl");
+    Result<GeneratedShader> fragment = generateStage(key, defines, files, "fragment");
+    if (!fragment)
+        return fragment.error();
+    program.vertex = std::move(*vertex);
+    program.fragment = std::move(*fragment);
+    return program;
+}
+
+std::string mapCompilerLog(std::string_view log, const std::vector<std::string>& sources) {
+    // Mesa "0:12(5):", glslang "ERROR: 0:12:", NVIDIA "0(12) :".
+    static const std::regex position(R"((^|[^0-9A-Za-z_.])(\d+)(:(\d+)|\((\d+)\)))");
+    std::string out;
+    const std::string text(log);
+    std::size_t last = 0;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), position);
+         it != std::sregex_iterator(); ++it) {
+        const std::smatch& m = *it;
+        const unsigned long source = std::stoul(m[2].str());
+        out.append(text, last, m.position(0) - last);
+        if (source < sources.size()) {
+            const std::string line = m[4].matched ? m[4].str() : m[5].str();
+            out += m[1].str() + sources[source] + ":" + line;
+        } else {
+            out += m[0].str();
+        }
+        last = m.position(0) + m.length(0);
+    }
+    out.append(text, last, std::string::npos);
+    return out;
+}
+
+} // namespace px

@@ -1,0 +1,29 @@
+// Meshes: world-space position, normal, tiled uv and, unless the fragment shader derives its
+// frame from screen-space derivatives, the tangent frame T = dP/du, B = dP/dv (CONVENTIONS §2) at
+// full length: the lengths say how many world units one uv unit spans, which sets the depth scale.
+
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUv;
+layout(location = 3) in vec3 aTangent;
+layout(location = 4) in vec3 aBitangent;
+
+out vec3 vPosition;
+out vec3 vNormal;
+out vec2 vUv;
+out vec3 vTangent;
+out vec3 vBitangent;
+
+void main() {
+    vec4 world = pxModel * vec4(aPosition, 1.0);
+    vPosition = world.xyz;
+    vNormal = pxNormalMatrix * aNormal;
+    vUv = aUv * pxTiling;
+#if !defined(PX_HAS_DERIVATIVE_TBN)
+    // Tangents follow the surface (the model matrix, not the normal matrix); tiling packs more uv
+    // into the same length.
+    vTangent = mat3(pxModel) * aTangent / pxTiling.x;
+    vBitangent = mat3(pxModel) * aBitangent / pxTiling.y;
+#endif
+    gl_Position = pxViewProjection * world;
+}

@@ -1,0 +1,76 @@
+// Every variant, both stages, through glslangValidator, the Khronos reference front end: the
+// shaders are GLSL 4.30 core as the specification reads it, not only as Mesa accepts it.
+
+#include "parallax/shader/ShaderGenerator.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <fstream>
+
+using namespace px;
+
+class GlslangTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void everyVariantValidates();
+    void aBrokenShaderIsCaught();
+};
+
+namespace {
+
+// Runs the validator on a batch of files; returns its output on failure, empty on success.
+QString validate(const QStringList& files) {
+    QProcess p;
+    p.start(PX_GLSLANG, files);
+    if (!p.waitForFinished(120000) || p.exitStatus() != QProcess::NormalExit)
+        return QString("could not run %1: %2").arg(PX_GLSLANG, p.errorString());
+    if (p.exitCode() != 0)
+        return QString::fromUtf8(p.readAllStandardOutput() + p.readAllStandardError());
+    return {};
+}
+
+} // namespace
+
+void GlslangTest::everyVariantValidates() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QStringList batch;
+    int files = 0;
+    auto flush = [&]() -> QString {
+        const QString failure = batch.isEmpty() ? QString() : validate(batch);
+        batch.clear();
+        return failure;
+    };
+    for (const VariantKey& k : allVariants()) {
+        Result<GeneratedProgram> p = generateProgram(k);
+        QVERIFY2(p.ok(), k.name().c_str());
+        for (const auto& [stage, shader] :
+             {std::pair{".vert", &p->vertex}, std::pair{".frag", &p->fragment}}) {
+            const QString path = dir.filePath(QString::fromStdString(k.name()) + stage);
+            std::ofstream(path.toStdString()) << shader->text;
+            batch << path;
+            ++files;
+        }
+        if (batch.size() >= 600) {
+            const QString failure = flush();
+            QVERIFY2(failure.isEmpty(), qPrintable(failure.left(4000)));
+        }
+    }
+    const QString failure = flush();
+    QVERIFY2(failure.isEmpty(), qPrintable(failure.left(4000)));
+    QCOMPARE(files, static_cast<int>(2 * allVariants().size()));
+}
+
+// The check can fail: a shader the reference compiler rejects is reported.
+void GlslangTest::aBrokenShaderIsCaught() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("broken.frag");
+    std::ofstream(path.toStdString())
+        << "#version 430 core\nout vec4 c;\nvoid main() { c = vec(1); }\n";
+    QVERIFY(!validate({path}).isEmpty());
+}
+
+QTEST_APPLESS_MAIN(GlslangTest)
+#include "GlslangTest.moc"

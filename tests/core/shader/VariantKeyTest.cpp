@@ -1,0 +1,146 @@
+// Variant keys: bits round-trip, validity, the canonicalising filter and the variant count.
+
+#include "parallax/shader/VariantKey.h"
+
+#include <QtTest>
+#include <set>
+
+using namespace px;
+
+class VariantKeyTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void bitsRoundTrip();
+    void outOfRangeBitsAreRejected();
+    void canonicalIsIdempotentAndValidityPreserving();
+    void variantCount();
+    void canonicalDropsWhatIsNeverRead();
+    void normalTechniqueNeedsANormalSource();
+    void namesAreUnique();
+    void materialDecidesTheKey();
+};
+
+void VariantKeyTest::bitsRoundTrip() {
+    int decoded = 0;
+    for (std::uint32_t b = 0; b < kVariantKeyCount; ++b) {
+        if (const std::optional<VariantKey> k = VariantKey::fromBits(b)) {
+            QCOMPARE(k->bits(), b);
+            ++decoded;
+        }
+    }
+    // 11 techniques of 16 codes, 3 outputs of 4 codes.
+    QCOMPARE(decoded, static_cast<int>(kVariantKeyCount) / 16 * 11 / 4 * 3);
+}
+
+void VariantKeyTest::outOfRangeBitsAreRejected() {
+    QVERIFY(!VariantKey::fromBits(11).has_value());       // technique code 11
+    QVERIFY(!VariantKey::fromBits(3u << 12).has_value()); // output code 3
+    QVERIFY(!VariantKey::fromBits(kVariantKeyCount).has_value());
+}
+
+void VariantKeyTest::canonicalIsIdempotentAndValidityPreserving() {
+    for (std::uint32_t b = 0; b < kVariantKeyCount; ++b) {
+        const std::optional<VariantKey> k = VariantKey::fromBits(b);
+        if (!k || !k->isValid())
+            continue;
+        const VariantKey c = canonical(*k);
+        QVERIFY2(c.isValid(), qPrintable(QString::fromStdString(k->name())));
+        QVERIFY(canonical(c) == c);
+        QVERIFY(c.technique == k->technique);
+        QVERIFY(c.output == k->output);
+    }
+}
+
+void VariantKeyTest::variantCount() {
+    // Colour: none 2*2*2*2 (albedo, orm, lighting, tbn); normal (map + 2 height filters x 2 wraps)
+    // x 16; 9 parallax techniques x shadow 2 x normal source 4 x 16 x wrap 2. Surface: 9 x wrap 2
+    // x tbn 2 + 2 x tbn 2. Trace: 9 x wrap 2 + 2.
+    const std::size_t expected =
+        16 + 5 * 16 + 9 * 2 * 4 * 16 * 2 + (9 * 2 * 2 + 2 * 2) + (9 * 2 + 2);
+    const std::vector<VariantKey> all = allVariants();
+    QCOMPARE(all.size(), expected);
+    for (const VariantKey& k : all) {
+        QVERIFY(k.isValid());
+        QVERIFY(canonical(k) == k);
+    }
+}
+
+void VariantKeyTest::canonicalDropsWhatIsNeverRead() {
+    VariantKey k;
+    k.technique = Technique::None;
+    k.shadow = true;
+    k.normalSource = NormalSource::HeightSobel;
+    k.wrap = WrapMode::Clamp;
+    VariantKey c = canonical(k);
+    QVERIFY(!c.shadow);
+    QVERIFY(c.normalSource == NormalSource::None);
+    QVERIFY(c.wrap == WrapMode::Repeat); // nothing reads the height map
+
+    k.technique = Technique::Normal;
+    k.normalSource = NormalSource::Map;
+    c = canonical(k);
+    QVERIFY(!c.shadow);
+    QVERIFY(c.wrap == WrapMode::Repeat);
+    k.normalSource = NormalSource::HeightCentral;
+    QVERIFY(canonical(k).wrap == WrapMode::Clamp); // derived normals read heights with the wrap
+
+    k.technique = Technique::Pom;
+    k.albedoMap = true;
+    k.lighting = LightingModel::MetallicRoughness;
+    k.output = ShaderOutput::Trace;
+    k.tbn = TbnSource::Derivatives;
+    c = canonical(k);
+    QVERIFY(!c.shadow && !c.albedoMap);
+    QVERIFY(c.normalSource == NormalSource::None);
+    QVERIFY(c.lighting == LightingModel::BlinnPhong);
+    QVERIFY(c.tbn == TbnSource::VertexTangents);
+    QVERIFY(c.wrap == WrapMode::Clamp);
+    k.output = ShaderOutput::Surface;
+    QVERIFY(canonical(k).tbn == TbnSource::Derivatives); // a mesh: its frame matters
+    k.output = ShaderOutput::Color;
+    QVERIFY(canonical(k).shadow);
+}
+
+void VariantKeyTest::normalTechniqueNeedsANormalSource() {
+    VariantKey k;
+    k.technique = Technique::Normal;
+    k.normalSource = NormalSource::None;
+    QVERIFY(!k.isValid());
+    QVERIFY(k.validate().error().message.find("normal source") != std::string::npos);
+    k.output = ShaderOutput::Trace;
+    QVERIFY(k.isValid());
+}
+
+void VariantKeyTest::namesAreUnique() {
+    std::set<std::string> names;
+    for (const VariantKey& k : allVariants())
+        QVERIFY2(names.insert(k.name()).second, k.name().c_str());
+}
+
+void VariantKeyTest::materialDecidesTheKey() {
+    Material m;
+    m.technique = Technique::Cone;
+    m.selfShadow = true;
+    m.normalSource = NormalSource::Map;
+    m.maps.height = "h.png";
+    m.maps.albedo = "a.png";
+    m.maps.roughness = "r.png";
+    m.wrap = WrapMode::Clamp;
+    m.lighting = LightingModel::MetallicRoughness;
+    VariantKey k = variantFor(m);
+    QVERIFY(k.technique == Technique::Cone);
+    QVERIFY(k.shadow && k.albedoMap && k.surfaceMap);
+    QVERIFY(k.normalSource == NormalSource::HeightCentral); // no normal map file: derived
+    QVERIFY(k.wrap == WrapMode::Clamp);
+    QVERIFY(k.lighting == LightingModel::MetallicRoughness);
+    m.maps.normal = "n.png";
+    QVERIFY(variantFor(m).normalSource == NormalSource::Map);
+    m.maps.albedo.clear();
+    m.maps.roughness.clear();
+    k = variantFor(m);
+    QVERIFY(!k.albedoMap && !k.surfaceMap);
+}
+
+QTEST_APPLESS_MAIN(VariantKeyTest)
+#include "VariantKeyTest.moc"
