@@ -31,6 +31,7 @@ int run(int argc, char** argv) {
     };
     add(addSampleCommand);
     add(addTraceCommand);
+    add(addShaderCommand);
     add(addExportCommand);
     add(addBenchCommand);
 

@@ -14,6 +14,8 @@ using Action = std::function<int()>;
 // Every subcommand registers itself through one of these (declared here, defined in its file).
 Action addTraceCommand(CLI::App& app);
 Action addSampleCommand(CLI::App& app);
+Action addShaderCommand(CLI::App& app);
+Action addRenderCommand(CLI::App& app);
 Action addExportCommand(CLI::App& app);
 Action addBenchCommand(CLI::App& app);
 
