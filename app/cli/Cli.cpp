@@ -34,6 +34,7 @@ int run(int argc, char** argv) {
     add(addShaderCommand);
     add(addExportCommand);
     add(addBenchCommand);
+    add(addStabilityCommand);
 
     try {
         app.parse(argc, argv);

@@ -18,6 +18,7 @@ Action addShaderCommand(CLI::App& app);
 Action addRenderCommand(CLI::App& app);
 Action addExportCommand(CLI::App& app);
 Action addBenchCommand(CLI::App& app);
+Action addStabilityCommand(CLI::App& app);
 
 // Prints "error: <message>" to stderr and returns the failure status.
 int fail(const std::string& message);

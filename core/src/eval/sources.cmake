@@ -7,4 +7,6 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/Bench.cpp
   ${CMAKE_CURRENT_LIST_DIR}/BenchCsv.cpp
   ${CMAKE_CURRENT_LIST_DIR}/WorkPrecision.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/StabilityCases.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/StabilitySuite.cpp
 )

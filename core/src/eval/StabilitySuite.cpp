@@ -1,0 +1,295 @@
+#include "parallax/eval/StabilitySuite.h"
+
+#include "RayBatch.h"
+#include "StabilityCases.h"
+#include "parallax/bake/ConeMapBaker.h"
+#include "parallax/heightfield/HeightFieldLoader.h"
+#include "parallax/image/ImageFile.h"
+#include "parallax/trace/TraceScene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <memory>
+
+namespace px {
+namespace {
+
+using stability::CaseSpec;
+using stability::Reference;
+using stability::Special;
+
+std::string format(const char* fmt, double value) {
+    char text[48];
+    std::snprintf(text, sizeof text, fmt, value);
+    return text;
+}
+
+// Bilinear height in double precision (CONVENTIONS §1), independent of the kernels.
+double bilinear(const HeightField& f, WrapMode wrap, double u, double v) {
+    const double X = u * f.width - 0.5, Y = v * f.height - 0.5;
+    const double x0 = std::floor(X), y0 = std::floor(Y);
+    const double fx = X - x0, fy = Y - y0;
+    auto h = [&](double x, double y) {
+        return static_cast<double>(f.at(wrapIndex(static_cast<int>(x), f.width, wrap),
+                                        wrapIndex(static_cast<int>(y), f.height, wrap)));
+    };
+    return (h(x0, y0) * (1 - fx) + h(x0 + 1, y0) * fx) * (1 - fy) +
+           (h(x0, y0 + 1) * (1 - fx) + h(x0 + 1, y0 + 1) * fx) * fy;
+}
+
+// What one case traces with: its map, the cone maps its techniques read, its scene.
+struct CaseSetup {
+    HeightField field;
+    std::shared_ptr<const ConeMap> cone, relaxedCone;
+    TraceScene scene;
+    glm::vec2 P{0.0f};
+    stability::CaseGeometry geometry;
+};
+
+CaseSetup setUp(const CaseSpec& spec, int rays) {
+    CaseSetup s;
+    s.field = makeProceduralMap(spec.map, spec.width, spec.height, 1, spec.level);
+    s.scene.rays = rays;
+    s.scene.polarDeg = spec.polarDeg;
+    s.scene.azimuthDeg = spec.azimuthDeg;
+    s.scene.uvOffset = spec.uvOffset;
+    s.P = parallaxVector(spec.scale, spec.polarDeg, spec.azimuthDeg);
+    const double start = std::clamp(1.0 - s.field.maxHeight(), 0.0, 1.0);
+    s.geometry.rayTexels = std::hypot(static_cast<double>(s.P.x) * s.field.width,
+                                      static_cast<double>(s.P.y) * s.field.height) *
+                           (1.0 - start);
+    s.geometry.rayTiles =
+        std::hypot(static_cast<double>(s.P.x), static_cast<double>(s.P.y)) * (1.0 - start);
+    s.geometry.cosTheta = std::cos(spec.polarDeg * 3.14159265358979323846 / 180.0);
+    if (spec.special == Special::ZeroCones) {
+        auto relaxed = std::make_shared<ConeMap>(ConeKind::Relaxed, s.field.width, s.field.height);
+        std::fill(relaxed->sqrtRatio.begin(), relaxed->sqrtRatio.end(), 0.0f);
+        auto cone =
+            std::make_shared<ConeMap>(ConeKind::Conservative, s.field.width, s.field.height);
+        std::fill(cone->sqrtRatio.begin(), cone->sqrtRatio.end(), 0.0f);
+        s.cone = cone;
+        s.relaxedCone = relaxed;
+    } else if (spec.special == Special::ForeignCones) {
+        // The cones of a flat map: the widest there are, wrong everywhere the map rises.
+        const HeightField flat(spec.width, spec.height, 0.0f);
+        s.cone = std::make_shared<ConeMap>(bakeConeMap(flat, spec.wrap, ConeKind::Conservative));
+        s.relaxedCone = std::make_shared<ConeMap>(bakeConeMap(flat, spec.wrap, ConeKind::Relaxed));
+    }
+    return s;
+}
+
+// A constant surface's hits: t = 1 - h along each ray (h is the same everywhere).
+std::vector<TraceResult> closedFormHits(const CaseSetup& s, WrapMode wrap) {
+    std::vector<TraceResult> hits;
+    const int R = s.scene.rays;
+    for (int j = 0; j < R; ++j) {
+        for (int i = 0; i < R; ++i) {
+            const glm::dvec2 uv0 = rayOrigin(s.scene, i, j);
+            TraceResult r;
+            r.t = static_cast<float>(1.0 - bilinear(s.field, wrap, uv0.x, uv0.y));
+            r.u = uv0.x + static_cast<double>(s.P.x) * r.t;
+            r.v = uv0.y + static_cast<double>(s.P.y) * r.t;
+            hits.push_back(r);
+        }
+    }
+    return hits;
+}
+
+bool techniqueApplies(const CaseSpec& spec, Technique t) {
+    if (spec.special == Special::ZeroCones || spec.special == Special::ForeignCones)
+        return t == Technique::Cone || t == Technique::RelaxedCone;
+    return info(t).parallax;
+}
+
+// Applies the bound to the hits; returns the figure and, if violated, the failure.
+void checkBound(StabilityRow& row, std::span<const TraceResult> hits,
+                std::span<const TraceResult> reference, int width, int height) {
+    const ErrorBound& b = row.bound;
+    const std::string limit = format("%.3g", b.limit);
+    switch (b.kind) {
+    case BoundKind::None:
+        row.figure =
+            "p99 " + format("%.3g", row.stats.p99Error) + " texels (no bound: " + b.rule + ")";
+        return;
+    case BoundKind::MaxTexels:
+        row.figure = "max " + format("%.3g", row.stats.maxError) + " <= " + limit + " texels";
+        if (!(row.stats.maxError <= b.limit))
+            row.failure = "error above the bound";
+        return;
+    case BoundKind::P99Texels:
+        row.figure = "p99 " + format("%.3g", row.stats.p99Error) + " <= " + limit + " texels";
+        if (!(row.stats.p99Error <= b.limit))
+            row.failure = "p99 error above the bound";
+        return;
+    case BoundKind::NoOvershoot: {
+        double worst = 0.0;
+        for (std::size_t k = 0; k < hits.size(); ++k) {
+            if (hits[k].t > reference[k].t)
+                worst = std::max(worst, hitErrorTexels(hits[k], reference[k], width, height));
+        }
+        row.figure = "overshoot " + format("%.3g", worst) + " <= " + limit + " texels";
+        if (!(worst <= b.limit))
+            row.failure = "a ray ended past the hit";
+        return;
+    }
+    case BoundKind::MaxDepth: {
+        double worst = 0.0;
+        for (std::size_t k = 0; k < hits.size(); ++k)
+            worst = std::max(worst, std::abs(static_cast<double>(hits[k].t) - reference[k].t));
+        row.figure = "|t - (1 - h)| " + format("%.3g", worst) + " <= " + limit;
+        if (!(worst <= b.limit))
+            row.failure = "t differs from 1 - h(uv0)";
+        return;
+    }
+    }
+}
+
+void checkStability(StabilityRow& row) {
+    if (row.stats.invalid > 0)
+        row.failure = std::to_string(row.stats.invalid) + " rays NaN, infinite or t outside [0, 1]";
+    else if (row.stats.maxFetches > row.fetchCap)
+        row.failure = std::to_string(row.stats.maxFetches) + " fetches over the cap of " +
+                      std::to_string(row.fetchCap);
+}
+
+StabilityRow nanInFloatMapRow(const CaseSpec& spec) {
+    StabilityRow row;
+    row.caseName = std::string(spec.info.name);
+    row.technique = "loader";
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path dir =
+        fs::temp_directory_path(ec) /
+        ("parallax-stability-" + std::to_string(reinterpret_cast<std::uintptr_t>(&row)));
+    fs::create_directories(dir, ec);
+    const std::string file = (dir / "nan-height.exr").string();
+    Image image(spec.width, spec.height, 1);
+    image.at(3, 2) = std::numeric_limits<float>::quiet_NaN();
+    ImageWriteOptions write;
+    write.format = PixelFormat::Float;
+    if (Status s = writeImage(file, image, write); !s) {
+        row.failure = "could not write the test file: " + s.error().message;
+    } else {
+        Result<HeightField> loaded = loadHeightField(file);
+        if (loaded) {
+            row.failure = "the NaN map was accepted";
+        } else {
+            const std::string& message = loaded.error().message;
+            row.figure = "refused: " + message.substr(message.find(": ") + 2);
+            if (message.find("NaN") == std::string::npos ||
+                message.find("(3, 2)") == std::string::npos)
+                row.failure = "the message does not say NaN at texel (3, 2)";
+        }
+    }
+    fs::remove_all(dir, ec);
+    row.passed = row.failure.empty();
+    return row;
+}
+
+Result<std::vector<StabilityRow>> runCase(const CaseSpec& spec, int rays,
+                                          const EvalControl& control) {
+    if (spec.special == Special::NanInFloatMap)
+        return std::vector<StabilityRow>{nanInFloatMapRow(spec)};
+    const CaseSetup s = setUp(spec, rays);
+    TraceMaps maps;
+    maps.height = &s.field;
+    maps.wrap = spec.wrap;
+    maps.cone = s.cone.get();
+    maps.relaxedCone = s.relaxedCone.get();
+
+    std::vector<TraceResult> reference;
+    Result<Tracer> exact =
+        Tracer::create(maps, Technique::Exact, info(Technique::Exact).defaults, spec.scale);
+    if (!exact)
+        return exact.error();
+    if (!traceBatch(*exact, s.scene, RayTiming::Parallel, reference, control.cancel))
+        return evaluationCancelled();
+    if (spec.reference == Reference::ClosedForm || spec.scale == 0.0f)
+        reference = closedFormHits(s, spec.wrap);
+
+    std::vector<StabilityRow> rows;
+    for (const TechniqueInfo& ti : allTechniques()) {
+        if (!techniqueApplies(spec, ti.id))
+            continue;
+        Result<Tracer> tracer = Tracer::create(maps, ti.id, ti.defaults, spec.scale);
+        if (!tracer)
+            return tracer.error();
+        std::vector<TraceResult> hits, expected = reference;
+        if (!traceBatch(*tracer, s.scene, RayTiming::Parallel, hits, control.cancel))
+            return evaluationCancelled();
+        if (spec.special == Special::FarOrigin) {
+            // The reference: the same technique near the origin, moved by the whole tiles.
+            TraceScene near = s.scene;
+            near.uvOffset = {0.0, 0.0};
+            if (!traceBatch(*tracer, near, RayTiming::Parallel, expected, control.cancel))
+                return evaluationCancelled();
+            for (TraceResult& r : expected) {
+                r.u += spec.uvOffset.x;
+                r.v += spec.uvOffset.y;
+            }
+        }
+        StabilityRow row;
+        row.caseName = std::string(spec.info.name);
+        row.technique = std::string(ti.name);
+        row.stats = measureHits(hits, expected, s.field.width, s.field.height);
+        row.fetchCap = spec.scale == 0.0f ? 1 : fetchCap(ti.id, ti.defaults);
+        row.bound = stability::boundFor(spec, ti.id, ti.defaults, s.geometry);
+        checkBound(row, hits, expected, s.field.width, s.field.height);
+        row.figure += "; fetches <= " + std::to_string(row.stats.maxFetches) + " of " +
+                      std::to_string(row.fetchCap);
+        checkStability(row);
+        row.passed = row.failure.empty();
+        row.knownIssue = std::string(stability::knownIssue(spec, ti.id));
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+} // namespace
+
+bool suitePassed(const std::vector<StabilityRow>& rows) {
+    return std::all_of(rows.begin(), rows.end(),
+                       [](const StabilityRow& r) { return r.passed || !r.knownIssue.empty(); });
+}
+
+Result<std::vector<StabilityRow>> runStabilitySuite(const StabilityOptions& options,
+                                                    const EvalControl& control) {
+    if (options.rays < 1 || options.rays > 1024)
+        return Error{"rays must be 1 to 1024 per side, not " + std::to_string(options.rays)};
+    std::vector<const CaseSpec*> selected;
+    for (const std::string& name : options.cases) {
+        const auto specs = stability::caseSpecs();
+        auto it = std::find_if(specs.begin(), specs.end(),
+                               [&](const CaseSpec& c) { return c.info.name == name; });
+        if (it == specs.end())
+            return Error{"unknown stability case '" + name + "'"};
+        selected.push_back(&*it);
+    }
+    if (selected.empty()) {
+        for (const CaseSpec& c : stability::caseSpecs())
+            selected.push_back(&c);
+    }
+
+    std::vector<StabilityRow> rows;
+    EvalProgress progress;
+    progress.total = static_cast<int>(selected.size());
+    for (const CaseSpec* spec : selected) {
+        if (control.cancelled())
+            return evaluationCancelled();
+        Result<std::vector<StabilityRow>> caseRows = runCase(*spec, options.rays, control);
+        if (!caseRows)
+            return fileError(std::string(spec->info.name), caseRows.error().message);
+        for (StabilityRow& r : *caseRows)
+            rows.push_back(std::move(r));
+        ++progress.done;
+        progress.stage = std::string(spec->info.name);
+        if (control.progress)
+            control.progress(progress);
+    }
+    return rows;
+}
+
+} // namespace px
