@@ -12,6 +12,7 @@ packages=(
   libglm-dev libopenimageio-dev openimageio-tools
   nlohmann-json3-dev libcli11-dev libtbb-dev libbenchmark-dev
   libplplot-dev
+  npm
   xvfb xauth fonts-dejavu-core
   libgl1-mesa-dri libegl1 libegl-dev libgles-dev mesa-utils glslang-tools
 )
@@ -26,6 +27,11 @@ if [ ${#missing[@]} -gt 0 ]; then
   [ "$(id -u)" -eq 0 ] || sudo="sudo"
   $sudo apt-get update -q
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+# The Khronos glTF validator the export tests run (from the npm registry).
+if ! NODE_PATH="$(npm root -g 2>/dev/null)" node -e "require('gltf-validator')" 2>/dev/null; then
+  echo "Installing: gltf-validator (npm)"
+  $([ "$(id -u)" -eq 0 ] || echo sudo) npm install -g --no-fund --no-audit gltf-validator
 fi
 
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo ${PX_CMAKE_ARGS:-}

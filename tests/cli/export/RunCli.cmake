@@ -1,0 +1,16 @@
+# Runs one command and checks its exit status and output (stdout and stderr together):
+#   cmake -DCOMMAND="a;b;c" -DEXPECT_RC=N [-DEXPECT="regex1;regex2"] [-DREJECT=regex] -P RunCli.cmake
+execute_process(COMMAND ${COMMAND} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(all "${out}${err}")
+message("${all}")
+if(NOT rc EQUAL EXPECT_RC)
+  message(FATAL_ERROR "exit status ${rc}, expected ${EXPECT_RC}")
+endif()
+foreach(regex IN LISTS EXPECT)
+  if(NOT all MATCHES "${regex}")
+    message(FATAL_ERROR "output does not match: ${regex}")
+  endif()
+endforeach()
+if(REJECT AND all MATCHES "${REJECT}")
+  message(FATAL_ERROR "output matches what it must not: ${REJECT}")
+endif()
