@@ -51,9 +51,10 @@ std::string formatDecimal(float value); // "0.05"
 // A file name stem from a material name: letters, digits, '-' and '_' kept, the rest '_'.
 std::string fileStem(const std::string& name);
 
-// Adds the material's specialised fragment shader to a package (and its line to `files`).
-Status writePackageShader(ExportJob& job, const Material& packaged,
-                          std::vector<std::pair<std::string, std::string>>& files);
+// Adds the material's specialised shaders to a package (and their lines to `files`); returns
+// the usage note's section about them.
+Result<std::string> writePackageShader(ExportJob& job, const Material& packaged,
+                                       std::vector<std::pair<std::string, std::string>>& files);
 
 // The writers, one per target (PackageExport.cpp, GltfExport.cpp, ...).
 Status writePackage(ExportJob& job);

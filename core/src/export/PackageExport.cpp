@@ -132,9 +132,10 @@ Status writePackage(ExportJob& job) {
     if (Status s = job.text(materialName, materialToJson(out)); !s)
         return s;
     files.insert(files.begin(), {materialName, "the material (format version 1)"});
-    if (Status s = writePackageShader(job, out, files); !s)
-        return s;
-    return job.text("README.txt", usageNote(job, out, files));
+    Result<std::string> shaderNote = writePackageShader(job, out, files);
+    if (!shaderNote)
+        return shaderNote.error();
+    return job.text("README.txt", usageNote(job, out, files) + *shaderNote);
 }
 
 } // namespace px::exporter

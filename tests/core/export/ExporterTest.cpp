@@ -10,6 +10,7 @@
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/sample/ProceduralMaps.h"
+#include "parallax/shader/ShaderGenerator.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -29,6 +30,7 @@ private slots:
     void packageDepthMapBecomesHeight();
     void packageBakesMissingConeMapRoundingDown();
     void packageNormalGreenConverted();
+    void packagePacksSurfaceMapForTheShader();
     void gltfDescribesPlaneMaterialAndExtras();
     void godotMaterialResource();
     void unrealTexturesAndNote();
@@ -121,13 +123,23 @@ void ExporterTest::packageHasOnlyTheMapsTheTechniqueNeeds() {
     // pom, normals from height, Blinn-Phong: the normal and roughness files are not read.
     Result<ExportResult> result = run(ExportFormat::Package);
     QVERIFY2(result.ok(), result.ok() ? "" : result.error().message.c_str());
-    QCOMPARE(files("out"), (QStringList{".parallax-export", "README.txt", "bricks.json",
-                                        "bricks_albedo.png", "bricks_height.png"}));
+    QCOMPARE(files("out"),
+             (QStringList{".parallax-export", "README.txt", "bricks.frag", "bricks.json",
+                          "bricks.vert", "bricks_albedo.png", "bricks_height.png"}));
+    // The renderer's own program for the variant, and the note says how to bind it.
+    Result<GeneratedProgram> program =
+        generateProgram(variantFor(*loadMaterial(path("out/bricks.json"))));
+    QVERIFY(program.ok());
+    QCOMPARE(*readTextFile(path("out/bricks.frag")), program->fragment.text);
+    QVERIFY(program->fragment.text.find("pxConeMap") == std::string::npos);
     const std::string note = *readTextFile(path("out/README.txt"));
     QVERIFY2(note.find("Technique: pom (Parallax occlusion mapping), 8 to 32 layers") !=
                  std::string::npos,
              note.c_str());
     QVERIFY(note.find("bricks_height.png") != std::string::npos);
+    QVERIFY2(note.find("sampler2D pxHeightMap  (binding 0: the height map as R16") !=
+                 std::string::npos,
+             note.c_str());
     // Albedo stays sRGB 8-bit, height 16-bit.
     const Image albedo = read("out/bricks_albedo.png");
     QVERIFY(std::abs(albedo.at(3, 3, 0) - 0.8f) < 0.5f / 255);
@@ -205,6 +217,16 @@ void ExporterTest::packageNormalGreenConverted() {
     QVERIFY(std::abs(read("dx/bricks_normal.png").at(0, 0, 1) - 0.25f) < 1.0f / 255);
     Result<Material> loaded = loadMaterial(path("dx/bricks.json"));
     QVERIFY(loaded.ok() && loaded->normalGreen == NormalGreen::DirectX);
+}
+
+void ExporterTest::packagePacksSurfaceMapForTheShader() {
+    m_material.lighting = LightingModel::MetallicRoughness;
+    QVERIFY(run(ExportFormat::Package).ok());
+    const QStringList written = files("out");
+    QVERIFY(written.contains("bricks_roughness.png")); // for the material file
+    QVERIFY(written.contains("bricks_orm.png"));       // for the shader's surface map
+    QVERIFY(readTextFile(path("out/bricks.frag"))->find("pxOrmMap") != std::string::npos);
+    QVERIFY(std::abs(read("out/bricks_orm.png").at(1, 1, 1) - 0.3f) < 1.0f / 255);
 }
 
 void ExporterTest::gltfDescribesPlaneMaterialAndExtras() {
