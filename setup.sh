@@ -12,7 +12,7 @@ packages=(
   libglm-dev libopenimageio-dev openimageio-tools
   nlohmann-json3-dev libcli11-dev libtbb-dev libbenchmark-dev
   libplplot-dev
-  npm
+  npm desktop-file-utils appstream
   xvfb xauth fonts-dejavu-core
   libgl1-mesa-dri libegl1 libegl-dev libgles-dev mesa-utils glslang-tools
 )
