@@ -36,7 +36,7 @@ constexpr std::array<std::array<int, 3>, 10> kPalette{{{31, 119, 180},
                                                        {127, 127, 127},
                                                        {188, 189, 34},
                                                        {23, 190, 207}}};
-constexpr std::array<const char*, 10> kSymbols{"●", "■", "▲", "◆", "▼", "★", "✚", "⬟", "✖", "◀"};
+constexpr std::array<const char*, 10> kSymbols{"●", "■", "▲", "◆", "▼", "★", "✚", "▶", "✖", "◀"};
 
 int techniqueSlot(Technique t) {
     return kFirstTechnique + static_cast<int>(t) % static_cast<int>(kPalette.size());

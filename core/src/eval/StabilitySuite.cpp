@@ -104,49 +104,6 @@ bool techniqueApplies(const CaseSpec& spec, Technique t) {
     return info(t).parallax;
 }
 
-// Applies the bound to the hits; returns the figure and, if violated, the failure.
-void checkBound(StabilityRow& row, std::span<const TraceResult> hits,
-                std::span<const TraceResult> reference, int width, int height) {
-    const ErrorBound& b = row.bound;
-    const std::string limit = format("%.3g", b.limit);
-    switch (b.kind) {
-    case BoundKind::None:
-        row.figure =
-            "p99 " + format("%.3g", row.stats.p99Error) + " texels (no bound: " + b.rule + ")";
-        return;
-    case BoundKind::MaxTexels:
-        row.figure = "max " + format("%.3g", row.stats.maxError) + " <= " + limit + " texels";
-        if (!(row.stats.maxError <= b.limit))
-            row.failure = "error above the bound";
-        return;
-    case BoundKind::P99Texels:
-        row.figure = "p99 " + format("%.3g", row.stats.p99Error) + " <= " + limit + " texels";
-        if (!(row.stats.p99Error <= b.limit))
-            row.failure = "p99 error above the bound";
-        return;
-    case BoundKind::NoOvershoot: {
-        double worst = 0.0;
-        for (std::size_t k = 0; k < hits.size(); ++k) {
-            if (hits[k].t > reference[k].t)
-                worst = std::max(worst, hitErrorTexels(hits[k], reference[k], width, height));
-        }
-        row.figure = "overshoot " + format("%.3g", worst) + " <= " + limit + " texels";
-        if (!(worst <= b.limit))
-            row.failure = "a ray ended past the hit";
-        return;
-    }
-    case BoundKind::MaxDepth: {
-        double worst = 0.0;
-        for (std::size_t k = 0; k < hits.size(); ++k)
-            worst = std::max(worst, std::abs(static_cast<double>(hits[k].t) - reference[k].t));
-        row.figure = "|t - (1 - h)| " + format("%.3g", worst) + " <= " + limit;
-        if (!(worst <= b.limit))
-            row.failure = "t differs from 1 - h(uv0)";
-        return;
-    }
-    }
-}
-
 void checkStability(StabilityRow& row) {
     if (row.stats.invalid > 0)
         row.failure = std::to_string(row.stats.invalid) + " rays NaN, infinite or t outside [0, 1]";
@@ -237,9 +194,11 @@ Result<std::vector<StabilityRow>> runCase(const CaseSpec& spec, int rays,
         row.stats = measureHits(hits, expected, s.field.width, s.field.height);
         row.fetchCap = spec.scale == 0.0f ? 1 : fetchCap(ti.id, ti.defaults);
         row.bound = stability::boundFor(spec, ti.id, ti.defaults, s.geometry);
-        checkBound(row, hits, expected, s.field.width, s.field.height);
-        row.figure += "; fetches <= " + std::to_string(row.stats.maxFetches) + " of " +
-                      std::to_string(row.fetchCap);
+        const BoundCheck check =
+            checkBound(row.bound, hits, expected, s.field.width, s.field.height);
+        row.figure = check.figure + "; fetches <= " + std::to_string(row.stats.maxFetches) +
+                     " of " + std::to_string(row.fetchCap);
+        row.failure = check.failure;
         checkStability(row);
         row.passed = row.failure.empty();
         row.knownIssue = std::string(stability::knownIssue(spec, ti.id));
@@ -249,6 +208,49 @@ Result<std::vector<StabilityRow>> runCase(const CaseSpec& spec, int rays,
 }
 
 } // namespace
+
+BoundCheck checkBound(const ErrorBound& b, std::span<const TraceResult> hits,
+                      std::span<const TraceResult> reference, int width, int height) {
+    BoundCheck c;
+    const HitErrorStats stats = measureHits(hits, reference, width, height);
+    const std::string limit = format("%.3g", b.limit);
+    switch (b.kind) {
+    case BoundKind::None:
+        c.figure = "p99 " + format("%.3g", stats.p99Error) + " texels (no bound: " + b.rule + ")";
+        break;
+    case BoundKind::MaxTexels:
+        c.figure = "max " + format("%.3g", stats.maxError) + " <= " + limit + " texels";
+        if (!(stats.maxError <= b.limit))
+            c.failure = "error above the bound";
+        break;
+    case BoundKind::P99Texels:
+        c.figure = "p99 " + format("%.3g", stats.p99Error) + " <= " + limit + " texels";
+        if (!(stats.p99Error <= b.limit))
+            c.failure = "p99 error above the bound";
+        break;
+    case BoundKind::NoOvershoot: {
+        double worst = 0.0;
+        for (std::size_t k = 0; k < hits.size(); ++k) {
+            if (hits[k].t > reference[k].t)
+                worst = std::max(worst, hitErrorTexels(hits[k], reference[k], width, height));
+        }
+        c.figure = "overshoot " + format("%.3g", worst) + " <= " + limit + " texels";
+        if (!(worst <= b.limit))
+            c.failure = "a ray ended past the hit";
+        break;
+    }
+    case BoundKind::MaxDepth: {
+        double worst = 0.0;
+        for (std::size_t k = 0; k < hits.size(); ++k)
+            worst = std::max(worst, std::abs(static_cast<double>(hits[k].t) - reference[k].t));
+        c.figure = "|t - (1 - h)| " + format("%.3g", worst) + " <= " + limit;
+        if (!(worst <= b.limit))
+            c.failure = "t differs from 1 - h(uv0)";
+        break;
+    }
+    }
+    return c;
+}
 
 bool suitePassed(const std::vector<StabilityRow>& rows) {
     return std::all_of(rows.begin(), rows.end(),
@@ -280,6 +282,8 @@ Result<std::vector<StabilityRow>> runStabilitySuite(const StabilityOptions& opti
         if (control.cancelled())
             return evaluationCancelled();
         Result<std::vector<StabilityRow>> caseRows = runCase(*spec, options.rays, control);
+        if (!caseRows && isEvaluationCancelled(caseRows.error()))
+            return caseRows.error();
         if (!caseRows)
             return fileError(std::string(spec->info.name), caseRows.error().message);
         for (StabilityRow& r : *caseRows)

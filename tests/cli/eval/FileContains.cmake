@@ -1,0 +1,22 @@
+# cmake -DFILE=path [-DEXPECT="a;b"] [-DEXPECT_SVG_TEXT="c;d"] -P FileContains.cmake
+# Fails unless FILE holds every EXPECT string verbatim and every EXPECT_SVG_TEXT string (ASCII) as
+# PLplot's SVG driver writes text: one character reference per character ("&#x70;" for "p").
+file(READ "${FILE}" _content)
+foreach(_text ${EXPECT_SVG_TEXT})
+  string(LENGTH "${_text}" _n)
+  math(EXPR _last "${_n} - 1")
+  set(_encoded "")
+  foreach(_i RANGE ${_last})
+    string(SUBSTRING "${_text}" ${_i} 1 _c)
+    string(HEX "${_c}" _hex)
+    string(REGEX REPLACE "^0" "" _hex "${_hex}")
+    string(APPEND _encoded "&#x${_hex};")
+  endforeach()
+  list(APPEND EXPECT "${_encoded}")
+endforeach()
+foreach(_expect ${EXPECT})
+  string(FIND "${_content}" "${_expect}" _at)
+  if(_at EQUAL -1)
+    message(FATAL_ERROR "${FILE} does not contain '${_expect}'")
+  endif()
+endforeach()

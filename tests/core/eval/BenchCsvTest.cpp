@@ -1,0 +1,80 @@
+// The bench CSV: the documented header, one line per row, parameters only where the technique
+// reads them, quoting of free text.
+
+#include "parallax/eval/BenchCsv.h"
+
+#include <QtTest>
+
+using namespace px;
+
+class BenchCsvTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void headerAndRows();
+    void fields();
+};
+
+namespace {
+
+BenchReport report() {
+    BenchReport r;
+    r.polarDeg = {80.0};
+    r.azimuthDeg = 35.0;
+    r.rays = 128;
+    BenchRow row;
+    row.map = "bricks, old.png";
+    row.width = 256;
+    row.height = 128;
+    row.scale = 0.05f;
+    row.polarDeg = 80.0;
+    row.setting = qualitySweep(Technique::Pom)[1];
+    row.stats.meanError = 1.5;
+    row.stats.p99Error = 12.25;
+    row.stats.maxError = 40.0;
+    row.stats.wrongSurface = 321;
+    row.stats.meanFetches = 27.5;
+    row.stats.p99Fetches = 33;
+    row.stats.maxFetches = 33;
+    row.cpuNsPerRay = 812.345;
+    row.gpuRenderer = "no GPU timing: no renderer";
+    r.rows.push_back(row);
+    BenchRow pooled = row;
+    pooled.pooled = true;
+    pooled.map = "all";
+    pooled.scale.reset();
+    pooled.setting = defaultSetting(Technique::Pyramid);
+    pooled.gpuMsPerFrame = 241.5;
+    pooled.gpuRenderer = "llvmpipe (LLVM 15.0.6, 256 bits) [software]";
+    r.pooled.push_back(pooled);
+    return r;
+}
+
+QStringList lines(const std::string& csv) {
+    QStringList l = QString::fromStdString(csv).split('\n');
+    if (!l.isEmpty() && l.back().isEmpty())
+        l.pop_back();
+    return l;
+}
+
+} // namespace
+
+void BenchCsvTest::headerAndRows() {
+    const QStringList l = lines(benchCsv(report()));
+    QCOMPARE(l.size(), 3);
+    QCOMPARE(l[0], QString::fromLatin1(kBenchCsvHeader.data(), kBenchCsvHeader.size()));
+    QCOMPARE(l[0].split(',').size(), 27);
+}
+
+void BenchCsvTest::fields() {
+    const QStringList l = lines(benchCsv(report()));
+    QCOMPARE(l[1], QString("\"bricks, old.png\",256,128,repeat,0.05,80,35,128,pom,layers 8-32,1,"
+                           "8,32,,,,1.5,12.25,40,321,0,27.5,33,33,812.3,,"
+                           "no GPU timing: no renderer"));
+    QCOMPARE(l[2], QString("all,,,repeat,,80,35,128,pyramid,nodes 65536,1,,,,,65536,1.5,12.25,40,"
+                           "321,0,27.5,33,33,812.3,241.500,"
+                           "\"llvmpipe (LLVM 15.0.6, 256 bits) [software]\""));
+}
+
+QTEST_APPLESS_MAIN(BenchCsvTest)
+#include "BenchCsvTest.moc"

@@ -1,0 +1,97 @@
+// The bench's sweeps: each technique's default is measured, POM includes the seeds' baseline, and
+// the technique list parses as documented.
+
+#include "parallax/eval/QualitySweep.h"
+#include "parallax/trace/Tracer.h"
+
+#include <QtTest>
+
+using namespace px;
+
+class QualitySweepTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void everySweepHoldsItsDefault();
+    void pomHoldsTheSeedsBaseline();
+    void sweepsGrowInCost();
+    void labelsNameTheParametersUsed();
+    void techniqueLists();
+};
+
+void QualitySweepTest::everySweepHoldsItsDefault() {
+    for (const TechniqueInfo& ti : allTechniques()) {
+        if (!ti.parallax)
+            continue;
+        const std::vector<BenchSetting> sweep = qualitySweep(ti.id);
+        QVERIFY2(!sweep.empty(), ti.name.data());
+        const int defaults = static_cast<int>(std::count_if(
+            sweep.begin(), sweep.end(), [](const BenchSetting& s) { return s.isDefault; }));
+        QVERIFY2(defaults == 1, ti.name.data());
+        for (const BenchSetting& s : sweep) {
+            QCOMPARE(s.technique, ti.id);
+            QVERIFY(validate(s.params).ok());
+        }
+    }
+}
+
+void QualitySweepTest::pomHoldsTheSeedsBaseline() {
+    const std::vector<BenchSetting> sweep = qualitySweep(Technique::Pom);
+    auto seeds = std::find_if(sweep.begin(), sweep.end(), [](const BenchSetting& s) {
+        return s.params.minLayers == 8 && s.params.maxLayers == 32;
+    });
+    QVERIFY(seeds != sweep.end());
+    QCOMPARE(seeds->label, std::string("layers 8-32"));
+}
+
+void QualitySweepTest::sweepsGrowInCost() {
+    for (Technique t : {Technique::Steep, Technique::Pom, Technique::Relief, Technique::Secant}) {
+        const std::vector<BenchSetting> sweep = qualitySweep(t);
+        for (std::size_t k = 1; k < sweep.size(); ++k)
+            QVERIFY(sweep[k].params.maxLayers > sweep[k - 1].params.maxLayers);
+    }
+    for (Technique t : {Technique::Cone, Technique::RelaxedCone, Technique::Pyramid}) {
+        const std::vector<BenchSetting> sweep = qualitySweep(t);
+        for (std::size_t k = 1; k < sweep.size(); ++k)
+            QVERIFY(sweep[k].params.maxSteps > sweep[k - 1].params.maxSteps);
+    }
+}
+
+void QualitySweepTest::labelsNameTheParametersUsed() {
+    TraceParams p;
+    p.minLayers = 4;
+    p.maxLayers = 16;
+    p.binarySteps = 5;
+    p.secantSteps = 2;
+    p.maxSteps = 24;
+    QCOMPARE(settingLabel(Technique::Pom, p), std::string("layers 4-16"));
+    QCOMPARE(settingLabel(Technique::Relief, p), std::string("layers 4-16, binary 5"));
+    QCOMPARE(settingLabel(Technique::Secant, p), std::string("layers 4-16, secant 2"));
+    QCOMPARE(settingLabel(Technique::RelaxedCone, p), std::string("steps 24, binary 5"));
+    QCOMPARE(settingLabel(Technique::Pyramid, p), std::string("nodes 24"));
+    QCOMPARE(settingLabel(Technique::Offset, p), std::string());
+    QCOMPARE(settingLabel(Technique::Exact, p), std::string());
+}
+
+void QualitySweepTest::techniqueLists() {
+    Result<std::vector<Technique>> all = parseTechniqueList("all");
+    QVERIFY(all.ok());
+    QCOMPARE(all->front(), Technique::Offset);
+    QCOMPARE(all->back(), Technique::Exact);
+    QVERIFY(std::find(all->begin(), all->end(), Technique::None) == all->end());
+
+    Result<std::vector<Technique>> two = parseTechniqueList("pom, pyramid");
+    QVERIFY(two.ok());
+    QCOMPARE(*two, (std::vector<Technique>{Technique::Pom, Technique::Pyramid}));
+
+    Result<std::vector<Technique>> unknown = parseTechniqueList("pom,magic");
+    QVERIFY(!unknown.ok());
+    QCOMPARE(unknown.error().message,
+             std::string("unknown technique 'magic' in the technique list"));
+    QVERIFY(!parseTechniqueList("pom,pom").ok());
+    QVERIFY(!parseTechniqueList("none").ok());
+    QVERIFY(!parseTechniqueList("").ok());
+}
+
+QTEST_APPLESS_MAIN(QualitySweepTest)
+#include "QualitySweepTest.moc"

@@ -1,0 +1,123 @@
+// The stability suite: every case runs and passes (known issues aside), each documented case is
+// there, a row fails when its bound is broken, input rejection is checked, and it can be cancelled.
+
+#include "parallax/eval/StabilitySuite.h"
+
+#include <QtTest>
+#include <set>
+
+using namespace px;
+
+class StabilitySuiteTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void everyCasePasses();
+    void theIssuesCasesAreThere();
+    void everyTechniqueDocumentsABound();
+    void fetchCaps();
+    void boundsFailWhenBroken();
+    void unknownCase();
+    void cancel();
+};
+
+void StabilitySuiteTest::everyCasePasses() {
+    Result<std::vector<StabilityRow>> rows = runStabilitySuite({});
+    QVERIFY(rows.ok());
+    std::set<std::string> cases;
+    for (const StabilityRow& r : *rows) {
+        cases.insert(r.caseName);
+        QVERIFY2(r.passed || !r.knownIssue.empty(),
+                 qPrintable(QString::fromStdString(r.caseName + " " + r.technique + ": " +
+                                                   r.failure + " (" + r.figure + ")")));
+        QVERIFY2(!r.figure.empty(), r.caseName.c_str());
+        if (r.technique != "loader")
+            QCOMPARE(r.stats.invalid, std::int64_t(0));
+    }
+    QCOMPARE(cases.size(), stabilityCases().size());
+    QVERIFY(suitePassed(*rows));
+}
+
+void StabilitySuiteTest::theIssuesCasesAreThere() {
+    std::set<std::string_view> names;
+    for (const StabilityCaseInfo& c : stabilityCases())
+        names.insert(c.name);
+    for (std::string_view required :
+         {"polar-89.9", "scale-0", "tiny-scale", "huge-scale", "flat-0", "flat-1", "checkerboard",
+          "needles", "vertical-steps", "thin-cracks", "1x1", "non-power-of-two", "uv0-near-4096",
+          "zero-cones", "nan-in-float-map", "foreign-cone-map"})
+        QVERIFY2(names.count(required) == 1, required.data());
+}
+
+void StabilitySuiteTest::everyTechniqueDocumentsABound() {
+    for (const TechniqueInfo& ti : allTechniques()) {
+        if (!ti.parallax)
+            continue;
+        const auto rules = boundRules();
+        QVERIFY2(std::any_of(rules.begin(), rules.end(),
+                             [&](const BoundRule& r) { return r.technique == ti.id; }),
+                 ti.name.data());
+    }
+}
+
+void StabilitySuiteTest::fetchCaps() {
+    TraceParams p;
+    p.maxLayers = 32;
+    p.binarySteps = 6;
+    p.secantSteps = 3;
+    p.maxSteps = 24;
+    QCOMPARE(fetchCap(Technique::Offset, p), std::int64_t(1));
+    QCOMPARE(fetchCap(Technique::Pom, p), std::int64_t(33));
+    QCOMPARE(fetchCap(Technique::Relief, p), std::int64_t(39));
+    QCOMPARE(fetchCap(Technique::Secant, p), std::int64_t(36));
+    QCOMPARE(fetchCap(Technique::RelaxedCone, p), std::int64_t(54));
+    QCOMPARE(fetchCap(Technique::Exact, p), std::int64_t(24));
+}
+
+void StabilitySuiteTest::boundsFailWhenBroken() {
+    // Four rays on a 10 x 10 map; the third ends 1 texel past the reference, the fourth 3 short.
+    const std::vector<TraceResult> ref(4, TraceResult{0.5, 0.5, 0.5f, 1});
+    std::vector<TraceResult> hits = ref;
+    hits[2] = TraceResult{0.6, 0.5, 0.6f, 1};
+    hits[3] = TraceResult{0.2, 0.5, 0.2f, 1};
+    auto check = [&](BoundKind kind, double limit) {
+        return checkBound(ErrorBound{kind, limit, "rule"}, hits, ref, 10, 10);
+    };
+    QCOMPARE(check(BoundKind::MaxTexels, 3.0).failure, std::string());
+    QCOMPARE(check(BoundKind::MaxTexels, 2.9).failure, std::string("error above the bound"));
+    QCOMPARE(check(BoundKind::MaxTexels, 2.9).figure, std::string("max 3 <= 2.9 texels"));
+    QCOMPARE(check(BoundKind::P99Texels, 2.9).failure, std::string("p99 error above the bound"));
+    QCOMPARE(check(BoundKind::NoOvershoot, 1.0).failure, std::string());
+    QCOMPARE(check(BoundKind::NoOvershoot, 0.5).failure, std::string("a ray ended past the hit"));
+    QCOMPARE(check(BoundKind::MaxDepth, 0.31).failure, std::string());
+    QVERIFY(!check(BoundKind::MaxDepth, 0.29).failure.empty());
+    QCOMPARE(check(BoundKind::None, 0.0).failure, std::string());
+    hits[0].u = std::nan("");
+    QCOMPARE(check(BoundKind::MaxTexels, 3.0).failure, std::string());
+}
+
+void StabilitySuiteTest::unknownCase() {
+    StabilityOptions options;
+    options.cases = {"scale-0", "bogus"};
+    Result<std::vector<StabilityRow>> rows = runStabilitySuite(options);
+    QVERIFY(!rows.ok());
+    QCOMPARE(rows.error().message, std::string("unknown stability case 'bogus'"));
+}
+
+void StabilitySuiteTest::cancel() {
+    std::atomic<bool> stop{false};
+    int calls = 0;
+    EvalControl control;
+    control.cancel = &stop;
+    control.progress = [&](const EvalProgress&) {
+        ++calls;
+        stop = true;
+    };
+    Result<std::vector<StabilityRow>> rows = runStabilitySuite({}, control);
+    QVERIFY(!rows.ok());
+    QVERIFY(isEvaluationCancelled(rows.error()));
+    QCOMPARE(calls, 1);
+}
+
+QTEST_APPLESS_MAIN(StabilitySuiteTest)
+#include "StabilitySuiteTest.moc"
