@@ -78,14 +78,15 @@ Status writeUnreal(ExportJob& job) {
         note << "  UVs = TexCoord[0] * " << decimal(m.tiling) << " (no parallax: technique "
              << info(m.technique).name << ").\n";
     }
-    note << "  Base Color <- " << base << "_BC RGB";
-    note << "\n  Normal <- " << base << "_N RGB";
+    if (!job.assets.albedo.empty())
+        note << "  Base Color <- " << base << "_BC RGB\n";
+    if (!normals->empty())
+        note << "  Normal <- " << base << "_N RGB\n";
     if (job.orm())
-        note << "\n  Ambient Occlusion <- " << base << "_ORM R, Roughness <- G, Metallic <- B";
+        note << "  Ambient Occlusion <- " << base << "_ORM R, Roughness <- G, Metallic <- B\n";
     else
-        note << "\n  Roughness = " << decimal(m.roughness)
-             << ", Metallic = " << decimal(m.metallic);
-    note << "\n";
+        note << "  Roughness = " << decimal(m.roughness) << ", Metallic = " << decimal(m.metallic)
+             << "\n";
     return job.text(job.stem + "_Unreal.txt", note.str());
 }
 
