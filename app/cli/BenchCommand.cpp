@@ -38,6 +38,7 @@ struct BenchOptions {
     bool gpu = false;
     std::string out;
     std::string plot;
+    std::string fromCsv;
     bool quiet = false;
 };
 
@@ -102,7 +103,45 @@ void printSummary(std::ostream& out, const BenchReport& report) {
     }
 }
 
+std::string joinedScales(const std::vector<float>& scales) {
+    std::string text;
+    char number[32];
+    for (float s : scales) {
+        std::snprintf(number, sizeof number, "%g", s);
+        text += (text.empty() ? "" : ", ") + std::string(number);
+    }
+    return text;
+}
+
+Status writePlot(const BenchOptions& o, const BenchReport& report, const std::string& what) {
+    PlotLabels labels;
+    labels.title = "Work-precision: p99 hit error against cost, " + std::to_string(report.rays) +
+                   "\xc2\xb2 rays per map and scale, azimuth " +
+                   std::to_string(std::lround(report.azimuthDeg)) + "\xc2\xb0";
+    labels.subtitle = what + (report.gpuNote.empty() ? "" : "; GPU: " + report.gpuNote);
+    return writeWorkPrecisionPlot(o.plot, makeWorkPrecisionChart(report), labels);
+}
+
+// Plots a report measured before, without measuring again.
+int replot(const BenchOptions& o) {
+    if (o.plot.empty())
+        return fail("--from-csv only plots: give --plot FILE.svg");
+    Result<std::string> text = readTextFile(o.fromCsv);
+    if (!text)
+        return fail(text.error().message);
+    Result<BenchReport> report = parseBenchCsv(*text, o.fromCsv);
+    if (!report)
+        return fail(report.error().message);
+    if (Status s = writePlot(o, *report, "from " + o.fromCsv); !s)
+        return fail(s.error().message);
+    return 0;
+}
+
 int runBenchCommand(const BenchOptions& o) {
+    if (!o.fromCsv.empty())
+        return replot(o);
+    if (o.out.empty())
+        return fail("give --out FILE.csv (or - for standard output)");
     Result<std::vector<Technique>> techniques = parseTechniqueList(o.techniques);
     if (!techniques)
         return fail(techniques.error().message);
@@ -153,11 +192,12 @@ int runBenchCommand(const BenchOptions& o) {
     }
     const std::string machine = machineName();
     if (!o.plot.empty()) {
-        PlotLabels labels;
-        labels.title = "Work-precision: p99 hit error against cost, " +
-                       std::to_string(report->rays) + "\xc2\xb2 rays per map and scale";
-        labels.subtitle = machine + (report->gpuNote.empty() ? "" : "; " + report->gpuNote);
-        if (Status s = writeWorkPrecisionPlot(o.plot, makeWorkPrecisionChart(*report), labels); !s)
+        std::string maps;
+        for (const BenchMap& m : config.maps)
+            maps += (maps.empty() ? "" : ", ") + m.name;
+        const std::string what = "maps " + maps + "; scales " + joinedScales(config.scales) +
+                                 "; CPU: " + machine + ", one thread";
+        if (Status s = writePlot(o, *report, what); !s)
             return fail(s.error().message);
     }
     if (!o.quiet) {
@@ -207,8 +247,10 @@ Action addBenchCommand(CLI::App& app) {
                     "Timed single-thread passes per setting, fastest reported (0: no CPU timing)")
         ->check(CLI::Range(0, 100));
     cmd->add_flag("--gpu", o->gpu, "Also time a 1920x1080 frame per setting on the GL renderer");
-    cmd->add_option("--out", o->out, "Output CSV; - for standard output")->required();
+    cmd->add_option("--out", o->out, "Output CSV; - for standard output");
     cmd->add_option("--plot", o->plot, "Work-precision plot (.svg)");
+    cmd->add_option("--from-csv", o->fromCsv,
+                    "Plot a report written before (with --plot) instead of measuring");
     cmd->add_flag("--quiet", o->quiet, "No progress line and no summary table");
     return [o] { return runBenchCommand(*o); };
 }

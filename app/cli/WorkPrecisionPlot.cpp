@@ -8,6 +8,7 @@
 
 #include "parallax/io/AtomicWrite.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -21,6 +22,8 @@ namespace {
 
 // Character height: PLplot's default scales with the page and is far too large for a grid.
 constexpr PLFLT kCharacterMm = 2.6;
+
+constexpr PLFLT kPadDecades = 0.06;
 
 // Colour map 0 slots: background, ink, front, grid, then one per technique.
 enum Slot { kBackground = 0, kInk = 1, kFront = 2, kGrid = 3, kFirstTechnique = 4 };
@@ -76,7 +79,7 @@ void drawFront(const WorkPrecisionPanel& panel) {
     }
     if (x.empty())
         return;
-    x.push_back(panel.costRange.hiExp);
+    x.push_back(panel.costRange.hiExp + kPadDecades);
     y.push_back(y.back());
     plcol0(kFront);
     plwidth(7.0);
@@ -84,17 +87,17 @@ void drawFront(const WorkPrecisionPanel& panel) {
     plwidth(1.0);
 }
 
-void drawPanel(const WorkPrecisionChart& chart, const WorkPrecisionPanel& panel, bool legend) {
-    plwind(panel.costRange.loExp, panel.costRange.hiExp, panel.errorRange.loExp,
-           panel.errorRange.hiExp);
+void drawPanel(const WorkPrecisionChart& chart, const WorkPrecisionPanel& panel) {
+    // A little room beyond the decades, so points on a decade are not drawn on the frame.
+    plwind(panel.costRange.loExp - kPadDecades, panel.costRange.hiExp + kPadDecades,
+           panel.errorRange.loExp, panel.errorRange.hiExp + kPadDecades);
     plcol0(kGrid);
     plbox("ghst", 0.0, 0, "ghst", 0.0, 0);
     // The floor: errors at or below it are the reference's own rounding.
     const PLFLT floorY = std::log10(chart.errorFloor);
     plcol0(kInk);
     pllsty(2);
-    const PLFLT fx[2] = {static_cast<PLFLT>(panel.costRange.loExp),
-                         static_cast<PLFLT>(panel.costRange.hiExp)};
+    const PLFLT fx[2] = {panel.costRange.loExp - kPadDecades, panel.costRange.hiExp + kPadDecades};
     const PLFLT fy[2] = {floorY, floorY};
     plline(2, fx, fy);
     pllsty(1);
@@ -129,20 +132,30 @@ void drawPanel(const WorkPrecisionChart& chart, const WorkPrecisionPanel& panel,
     char title[96];
     std::snprintf(title, sizeof title, "polar %s", formatDegrees(panel.polarDeg).c_str());
     pllab(std::string(costAxisTitle(panel.axis)).c_str(), "p99 hit error (texels)", title);
+}
 
-    if (!legend)
-        return;
+// One legend for every panel, in the header band: every technique present, then the marks.
+void drawLegend(const WorkPrecisionChart& chart) {
+    std::vector<Technique> techniques;
+    for (const WorkPrecisionPanel& panel : chart.panels) {
+        for (const WorkPrecisionSeries& series : panel.series) {
+            if (std::find(techniques.begin(), techniques.end(), series.technique) ==
+                techniques.end())
+                techniques.push_back(series.technique);
+        }
+    }
+    std::sort(techniques.begin(), techniques.end());
     std::vector<std::string> names;
     std::vector<PLINT> options, colours, lineStyles;
     std::vector<PLFLT> lineWidths, symbolScales;
     std::vector<PLINT> symbolCounts;
     std::vector<std::string> symbols;
-    for (const WorkPrecisionSeries& series : panel.series) {
-        names.emplace_back(info(series.technique).name);
+    for (Technique t : techniques) {
+        names.emplace_back(info(t).name);
         options.push_back(PL_LEGEND_LINE | PL_LEGEND_SYMBOL);
-        colours.push_back(techniqueSlot(series.technique));
+        colours.push_back(techniqueSlot(t));
         lineWidths.push_back(1.5);
-        symbols.emplace_back(techniqueSymbol(series.technique));
+        symbols.emplace_back(techniqueSymbol(t));
         symbolScales.push_back(0.8);
     }
     names.emplace_back("Pareto front");
@@ -176,10 +189,11 @@ void drawPanel(const WorkPrecisionChart& chart, const WorkPrecisionPanel& panel,
     std::vector<PLINT> textColours(names.size(), kInk);
     PLFLT width = 0.0, height = 0.0;
     plschr(0.0, 0.8);
-    pllegend(&width, &height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
-             PL_POSITION_TOP | PL_POSITION_RIGHT | PL_POSITION_INSIDE, 0.02, 0.02, 0.08,
-             kBackground, kGrid, 1, n, 1, n, options.data(), 1.0, 1.0, 1.8, 0.0, textColours.data(),
-             text.data(), nullptr, nullptr, nullptr, nullptr, colours.data(), lineStyles.data(),
+    const PLINT rows = 2, columns = (n + 1) / 2;
+    pllegend(&width, &height, PL_LEGEND_BACKGROUND | PL_LEGEND_ROW_MAJOR,
+             PL_POSITION_BOTTOM | PL_POSITION_INSIDE, 0.0, 0.04, 0.03, kBackground, kGrid, 1, rows,
+             columns, n, options.data(), 1.0, 1.0, 1.8, 0.0, textColours.data(), text.data(),
+             nullptr, nullptr, nullptr, nullptr, colours.data(), lineStyles.data(),
              lineWidths.data(), colours.data(), symbolScales.data(), symbolCounts.data(),
              symbolText.data());
     plschr(0.0, 1.0);
@@ -197,7 +211,7 @@ Status writeWorkPrecisionPlot(const std::string& path, const WorkPrecisionChart&
         return fileError(path, "cannot create the file (missing folder or no permission)");
     const int columns = static_cast<int>(chart.axes.size());
     const int rows = static_cast<int>(chart.polarDeg.size());
-    const int panelWidth = 560, panelHeight = 400, header = 70;
+    const int panelWidth = 560, panelHeight = 400, header = 120;
     const int width = panelWidth * columns, height = panelHeight * rows + header;
 
     plsdev("svg");
@@ -216,13 +230,15 @@ Status writeWorkPrecisionPlot(const std::string& path, const WorkPrecisionChart&
     plschr(0.0, 0.9);
     plmtex("t", -3.6, 0.5, 0.5, labels.subtitle.c_str());
     plschr(0.0, 1.0);
+    plwind(0.0, 1.0, 0.0, 1.0);
+    drawLegend(chart);
     for (int r = 0; r < rows; ++r) {
         for (int c = 0; c < columns; ++c) {
             const double x0 = static_cast<double>(c) / columns;
             const double y1 = (1.0 - headerFraction) * (1.0 - static_cast<double>(r) / rows);
             const double cellW = 1.0 / columns, cellH = (1.0 - headerFraction) / rows;
             plvpor(x0 + 0.12 * cellW, x0 + 0.96 * cellW, y1 - 0.84 * cellH, y1 - 0.09 * cellH);
-            drawPanel(chart, chart.panel(r, c), r == 0 && c == 0);
+            drawPanel(chart, chart.panel(r, c));
         }
     }
     plend();

@@ -1,7 +1,10 @@
 #include "parallax/eval/BenchCsv.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <optional>
+#include <vector>
 
 namespace px {
 namespace {
@@ -85,6 +88,125 @@ std::string benchCsv(const BenchReport& report) {
     for (const BenchRow& row : report.pooled)
         appendRow(csv, report, row);
     return csv;
+}
+
+} // namespace px
+
+namespace px {
+namespace {
+
+// Splits one CSV record (RFC 4180 quoting) starting at `pos`; advances `pos` past its line end.
+std::vector<std::string> readRecord(std::string_view text, std::size_t& pos) {
+    std::vector<std::string> fields(1);
+    bool quoted = false;
+    for (; pos < text.size(); ++pos) {
+        const char c = text[pos];
+        if (quoted) {
+            if (c == '"' && pos + 1 < text.size() && text[pos + 1] == '"') {
+                fields.back() += '"';
+                ++pos;
+            } else if (c == '"') {
+                quoted = false;
+            } else {
+                fields.back() += c;
+            }
+        } else if (c == '"') {
+            quoted = true;
+        } else if (c == ',') {
+            fields.emplace_back();
+        } else if (c == '\n') {
+            ++pos;
+            break;
+        } else if (c != '\r') {
+            fields.back() += c;
+        }
+    }
+    return fields;
+}
+
+template <typename T> bool parseNumber(const std::string& text, T& value) {
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    return ec == std::errc() && ptr == end;
+}
+
+} // namespace
+
+Result<BenchReport> parseBenchCsv(std::string_view text, const std::string& source) {
+    std::size_t pos = 0;
+    const std::vector<std::string> header = readRecord(text, pos);
+    std::string joined;
+    for (const std::string& h : header)
+        joined += (joined.empty() ? "" : ",") + h;
+    if (joined != kBenchCsvHeader)
+        return fileError(source, "not a bench report: the header differs from the bench's");
+    BenchReport report;
+    report.polarDeg.clear();
+    int line = 1;
+    while (pos < text.size()) {
+        ++line;
+        const std::vector<std::string> f = readRecord(text, pos);
+        if (f.size() == 1 && f[0].empty())
+            continue;
+        auto bad = [&](const std::string& what) {
+            return fileError(source, "line " + std::to_string(line) + ": " + what);
+        };
+        if (f.size() != header.size())
+            return bad(std::to_string(f.size()) + " fields, expected " +
+                       std::to_string(header.size()));
+        BenchRow row;
+        row.map = f[0];
+        row.pooled = f[0] == "all" && f[1].empty();
+        const std::optional<Technique> technique = parseTechnique(f[8]);
+        if (!technique)
+            return bad("unknown technique '" + f[8] + "'");
+        row.setting.technique = *technique;
+        row.setting.params = info(*technique).defaults;
+        row.setting.label = f[9];
+        row.setting.isDefault = f[10] == "1";
+        const std::optional<WrapMode> wrap = parseWrapMode(f[3]);
+        bool ok = wrap.has_value() && parseNumber(f[5], row.polarDeg) &&
+                  parseNumber(f[6], report.azimuthDeg) && parseNumber(f[7], report.rays);
+        if (wrap)
+            report.wrap = *wrap;
+        if (!row.pooled) {
+            float scale = 0.0f;
+            ok = ok && parseNumber(f[1], row.width) && parseNumber(f[2], row.height) &&
+                 parseNumber(f[4], scale);
+            row.scale = scale;
+        }
+        int* params[] = {&row.setting.params.minLayers, &row.setting.params.maxLayers,
+                         &row.setting.params.binarySteps, &row.setting.params.secantSteps,
+                         &row.setting.params.maxSteps};
+        for (int k = 0; k < 5; ++k) {
+            if (!f[11 + k].empty())
+                ok = ok && parseNumber(f[11 + k], *params[k]);
+        }
+        HitErrorStats& s = row.stats;
+        ok = ok && parseNumber(f[16], s.meanError) && parseNumber(f[17], s.p99Error) &&
+             parseNumber(f[18], s.maxError) && parseNumber(f[19], s.wrongSurface) &&
+             parseNumber(f[20], s.invalid) && parseNumber(f[21], s.meanFetches) &&
+             parseNumber(f[22], s.p99Fetches) && parseNumber(f[23], s.maxFetches);
+        for (auto [k, target] : {std::pair{24, &row.cpuNsPerRay}, {25, &row.gpuMsPerFrame}}) {
+            double value = 0.0;
+            if (!f[k].empty()) {
+                ok = ok && parseNumber(f[k], value);
+                *target = value;
+            }
+        }
+        if (!ok)
+            return bad("a value is not a number");
+        row.gpuRenderer = f[26];
+        if (std::find(report.polarDeg.begin(), report.polarDeg.end(), row.polarDeg) ==
+            report.polarDeg.end())
+            report.polarDeg.push_back(row.polarDeg);
+        (row.pooled ? report.pooled : report.rows).push_back(std::move(row));
+    }
+    if (report.rows.empty() && report.pooled.empty())
+        return fileError(source, "the bench report has no rows");
+    if (!report.pooled.empty())
+        report.gpuNote = report.pooled.front().gpuRenderer;
+    return report;
 }
 
 } // namespace px

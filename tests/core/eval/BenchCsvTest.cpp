@@ -13,6 +13,8 @@ class BenchCsvTest : public QObject {
 private slots:
     void headerAndRows();
     void fields();
+    void readsBackWhatItWrote();
+    void refusesOtherFiles();
 };
 
 namespace {
@@ -74,6 +76,33 @@ void BenchCsvTest::fields() {
     QCOMPARE(l[2], QString("all,,,repeat,,80,35,128,pyramid,nodes 65536,1,,,,,65536,1.5,12.25,40,"
                            "321,0,27.5,33,33,812.3,241.500,"
                            "\"llvmpipe (LLVM 15.0.6, 256 bits) [software]\""));
+}
+
+void BenchCsvTest::readsBackWhatItWrote() {
+    const std::string csv = benchCsv(report());
+    Result<BenchReport> back = parseBenchCsv(csv, "r.csv");
+    QVERIFY2(back.ok(), back.ok() ? "" : back.error().message.c_str());
+    QCOMPARE(back->rows.size(), std::size_t(1));
+    QCOMPARE(back->pooled.size(), std::size_t(1));
+    QCOMPARE(back->pooled[0].setting.technique, Technique::Pyramid);
+    QCOMPARE(back->pooled[0].setting.params.maxSteps, 65536);
+    QCOMPARE(back->rows[0].setting.params.maxLayers, 32);
+    QCOMPARE(back->polarDeg, std::vector<double>{80.0});
+    QCOMPARE(benchCsv(*back), csv);
+}
+
+void BenchCsvTest::refusesOtherFiles() {
+    Result<BenchReport> r = parseBenchCsv("i,j,u,v,t,fetches\n0,0,0.5,0.5,1,1\n", "trace.csv");
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().message,
+             std::string("trace.csv: not a bench report: the header differs from the bench's"));
+    std::string csv = benchCsv(report());
+    csv.insert(csv.rfind("pyramid"), "x");
+    r = parseBenchCsv(csv, "r.csv");
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().message, std::string("r.csv: line 3: unknown technique 'xpyramid'"));
+    QVERIFY(!parseBenchCsv(std::string(kBenchCsvHeader) + "\n", "empty.csv").ok());
+    QVERIFY(!parseBenchCsv(std::string(kBenchCsvHeader) + "\nall,1,2\n", "short.csv").ok());
 }
 
 QTEST_APPLESS_MAIN(BenchCsvTest)

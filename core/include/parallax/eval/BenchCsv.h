@@ -17,4 +17,8 @@ inline constexpr std::string_view kBenchCsvHeader =
 
 std::string benchCsv(const BenchReport& report);
 
+// Reads a report benchCsv() wrote (to plot it again, or to compare runs); `source` names it in
+// errors: another header, a short line, a value that is not a number, no rows.
+Result<BenchReport> parseBenchCsv(std::string_view text, const std::string& source);
+
 } // namespace px
