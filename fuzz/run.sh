@@ -25,6 +25,7 @@ CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithD
   -DPX_FUZZ=ON -DPX_BUILD_TESTS=OFF -DPX_BUILD_STUDIO=OFF -DPX_SANITIZE=OFF
 cmake --build "$build" --target px-fuzz-material px-fuzz-image
 
+export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan.supp:print_suppressions=0"
 status=0
 for target in material image; do
   corpus="$build/fuzz-corpus/$target"
