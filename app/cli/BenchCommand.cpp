@@ -9,6 +9,7 @@
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/sample/ProceduralMaps.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -29,6 +30,7 @@ struct BenchOptions {
     std::string channel = "red";
     std::string wrap = "repeat";
     std::string techniques = "all";
+    std::vector<std::string> sweeps;
     bool defaultsOnly = false;
     std::vector<double> polar{30.0, 60.0, 80.0, 87.0};
     double azimuth = 35.0;
@@ -152,13 +154,30 @@ int runBenchCommand(const BenchOptions& o) {
     BenchConfig config;
     config.maps = std::move(*maps);
     config.wrap = parseWrapMode(o.wrap).value_or(WrapMode::Repeat);
+    // Hand-given sweeps replace the built-in ones of their techniques (and add the technique).
+    std::vector<std::pair<Technique, std::vector<BenchSetting>>> given;
+    for (const std::string& spec : o.sweeps) {
+        Result<std::vector<BenchSetting>> sweep = parseSweep(spec);
+        if (!sweep)
+            return fail(sweep.error().message);
+        const Technique t = sweep->front().technique;
+        if (std::find(techniques->begin(), techniques->end(), t) == techniques->end())
+            techniques->push_back(t);
+        given.emplace_back(t, std::move(*sweep));
+    }
     for (Technique t : *techniques) {
-        if (o.defaultsOnly) {
-            config.settings.push_back(defaultSetting(t));
-        } else {
-            for (BenchSetting& s : qualitySweep(t))
-                config.settings.push_back(std::move(s));
+        std::vector<BenchSetting> sweep =
+            o.defaultsOnly ? std::vector<BenchSetting>{defaultSetting(t)} : qualitySweep(t);
+        bool replaced = false;
+        for (auto& [technique, settings] : given) {
+            if (technique == t) {
+                sweep = replaced ? sweep : std::vector<BenchSetting>{};
+                sweep.insert(sweep.end(), settings.begin(), settings.end());
+                replaced = true;
+            }
         }
+        for (BenchSetting& s : sweep)
+            config.settings.push_back(std::move(s));
     }
     config.polarDeg = o.polar;
     config.azimuthDeg = o.azimuth;
@@ -231,6 +250,10 @@ Action addBenchCommand(CLI::App& app) {
     cmd->add_option("--wrap", o->wrap, "Wrap mode of the material")
         ->check(CLI::IsMember({"repeat", "clamp"}));
     cmd->add_option("--techniques", o->techniques, "all, or a comma-separated list of techniques");
+    cmd->add_option("--sweep", o->sweeps,
+                    "A technique's settings by hand, replacing its built-in sweep: "
+                    "TECHNIQUE:PARAMETER=V1,V2 (layers=8-32,16-64; binary-steps, secant-steps, "
+                    "max-steps); repeatable");
     cmd->add_flag("--defaults-only", o->defaultsOnly,
                   "Measure each technique's default setting only, not its sweep");
     cmd->add_option("--polar", o->polar, "View angles from the normal, degrees [0, 90)")

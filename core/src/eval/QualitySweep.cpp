@@ -1,6 +1,9 @@
 #include "parallax/eval/QualitySweep.h"
 
+#include "parallax/trace/Tracer.h"
+
 #include <algorithm>
+#include <cstdio>
 
 namespace px {
 namespace {
@@ -94,6 +97,55 @@ std::vector<BenchSetting> qualitySweep(Technique technique) {
     std::vector<BenchSetting> sweep;
     for (const TraceParams& p : points)
         sweep.push_back({technique, p, settingLabel(technique, p), sameParams(p, defaults)});
+    return sweep;
+}
+
+Result<std::vector<BenchSetting>> parseSweep(std::string_view spec) {
+    const std::size_t colon = spec.find(':');
+    const std::size_t equals = spec.find('=');
+    if (colon == std::string_view::npos || equals == std::string_view::npos || equals < colon)
+        return Error{"a sweep is TECHNIQUE:PARAMETER=V1,V2,..., not '" + std::string(spec) + "'"};
+    const std::string name = trim(spec.substr(0, colon));
+    const std::string parameter = trim(spec.substr(colon + 1, equals - colon - 1));
+    const std::optional<Technique> technique = parseTechnique(name);
+    if (!technique || !info(*technique).parallax)
+        return Error{"unknown technique '" + name + "' in the sweep"};
+    const TechniqueInfo& ti = info(*technique);
+    const bool reads = parameter == "layers"         ? ti.usesLayers
+                       : parameter == "binary-steps" ? ti.usesBinarySteps
+                       : parameter == "secant-steps" ? ti.usesSecantSteps
+                       : parameter == "max-steps"    ? ti.usesMaxSteps
+                                                     : false;
+    if (!reads)
+        return Error{name + " has no parameter '" + parameter +
+                     "' (layers, binary-steps, secant-steps, max-steps: those it reads)"};
+    std::vector<BenchSetting> sweep;
+    std::string_view values = spec.substr(equals + 1);
+    std::size_t start = 0;
+    while (start <= values.size()) {
+        const std::size_t comma = std::min(values.find(',', start), values.size());
+        const std::string value = trim(values.substr(start, comma - start));
+        start = comma + 1;
+        TraceParams p = ti.defaults;
+        int a = 0, b = 0;
+        char dash = 0, extra = 0;
+        const int fields = std::sscanf(value.c_str(), "%d%c%d%c", &a, &dash, &b, &extra);
+        const bool ok = parameter == "layers" ? fields == 3 && dash == '-' : fields == 1;
+        if (!ok)
+            return Error{"'" + value + "' is not a value of " + parameter +
+                         (parameter == "layers" ? " (MIN-MAX)" : "")};
+        if (parameter == "layers") {
+            p.minLayers = a;
+            p.maxLayers = b;
+        } else {
+            (parameter == "binary-steps"   ? p.binarySteps
+             : parameter == "secant-steps" ? p.secantSteps
+                                           : p.maxSteps) = a;
+        }
+        if (Status v = validate(p); !v)
+            return Error{name + ": " + v.error().message};
+        sweep.push_back({*technique, p, settingLabel(*technique, p), sameParams(p, ti.defaults)});
+    }
     return sweep;
 }
 

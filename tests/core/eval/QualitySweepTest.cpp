@@ -2,6 +2,7 @@
 // the technique list parses as documented.
 
 #include "parallax/eval/QualitySweep.h"
+
 #include "parallax/trace/Tracer.h"
 
 #include <QtTest>
@@ -17,6 +18,7 @@ private slots:
     void sweepsGrowInCost();
     void labelsNameTheParametersUsed();
     void techniqueLists();
+    void sweepsByHand();
 };
 
 void QualitySweepTest::everySweepHoldsItsDefault() {
@@ -91,6 +93,35 @@ void QualitySweepTest::techniqueLists() {
     QVERIFY(!parseTechniqueList("pom,pom").ok());
     QVERIFY(!parseTechniqueList("none").ok());
     QVERIFY(!parseTechniqueList("").ok());
+}
+
+void QualitySweepTest::sweepsByHand() {
+    Result<std::vector<BenchSetting>> steps = parseSweep("relaxed-cone:max-steps=16, 40");
+    QVERIFY(steps.ok());
+    QCOMPARE(steps->size(), std::size_t(2));
+    QCOMPARE((*steps)[1].params.maxSteps, 40);
+    QCOMPARE((*steps)[1].params.binarySteps, info(Technique::RelaxedCone).defaults.binarySteps);
+    QCOMPARE((*steps)[1].label, std::string("steps 40, binary 8"));
+
+    Result<std::vector<BenchSetting>> layers = parseSweep("pom:layers=8-32,12-48");
+    QVERIFY(layers.ok());
+    QVERIFY((*layers)[0].isDefault);
+    QCOMPARE((*layers)[1].params.minLayers, 12);
+    QCOMPARE((*layers)[1].params.maxLayers, 48);
+
+    auto error = [](std::string_view spec) {
+        Result<std::vector<BenchSetting>> r = parseSweep(spec);
+        return r.ok() ? std::string() : r.error().message;
+    };
+    QCOMPARE(error("pom:binary-steps=4"),
+             std::string("pom has no parameter 'binary-steps' (layers, binary-steps, "
+                         "secant-steps, max-steps: those it reads)"));
+    QCOMPARE(error("pom:layers=8"), std::string("'8' is not a value of layers (MIN-MAX)"));
+    QCOMPARE(error("pom:layers=40-8"), std::string("pom: min layers (40) exceed max layers (8)"));
+    QCOMPARE(error("magic:max-steps=3"), std::string("unknown technique 'magic' in the sweep"));
+    QCOMPARE(error("cone=3"),
+             std::string("a sweep is TECHNIQUE:PARAMETER=V1,V2,..., not 'cone=3'"));
+    QCOMPARE(error("cone:max-steps=3x"), std::string("'3x' is not a value of max-steps"));
 }
 
 QTEST_APPLESS_MAIN(QualitySweepTest)

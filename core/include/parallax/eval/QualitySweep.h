@@ -29,6 +29,12 @@ std::vector<BenchSetting> qualitySweep(Technique technique);
 // Only the technique's default setting.
 BenchSetting defaultSetting(Technique technique);
 
+// A sweep given by hand, "TECHNIQUE:PARAMETER=V1,V2,...": parameter is layers (MIN-MAX pairs:
+// "pom:layers=8-32,16-64"), binary-steps, secant-steps or max-steps; the others keep the
+// technique's defaults. Fails on an unknown technique or parameter, one the technique does not
+// read, or a value out of range.
+Result<std::vector<BenchSetting>> parseSweep(std::string_view spec);
+
 // "all" (every technique that traces rays, `exact` included) or a comma-separated list of names.
 // Fails on an unknown name, a repeated one, or `none`/`normal` (they trace nothing).
 Result<std::vector<Technique>> parseTechniqueList(std::string_view list);
