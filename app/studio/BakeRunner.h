@@ -1,0 +1,68 @@
+#pragma once
+// Runs the bakers (normal, cone, relaxed cone) on a worker thread, one at a time in the order
+// asked, with progress and cancellation: the UI never waits for a bake. The result comes back on
+// the GUI thread together with the maps it was baked from, so the caller can tell whether the
+// height map changed meanwhile.
+
+#include "parallax/bake/ConeMap.h"
+#include "parallax/bake/NormalMapBaker.h"
+#include "parallax/material/MaterialAssets.h"
+
+#include <QFutureWatcher>
+#include <QObject>
+#include <QString>
+#include <atomic>
+#include <deque>
+#include <memory>
+
+namespace px::studio {
+
+enum class BakeKind { Normal, Cone, RelaxedCone };
+QString bakeTitle(BakeKind kind); // "normal map", "cone map", "relaxed cone map"
+
+struct BakeRequest {
+    BakeKind kind = BakeKind::Cone;
+    std::shared_ptr<const MaterialAssets> source; // its height map is baked
+    WrapMode wrap = WrapMode::Repeat;
+    NormalBakeOptions normal; // for BakeKind::Normal
+};
+
+struct BakeOutcome {
+    BakeRequest request;
+    Image normal;  // BakeKind::Normal
+    ConeMap cone;  // BakeKind::Cone and RelaxedCone
+    QString error; // empty on success
+    bool cancelled = false;
+    double seconds = 0.0;
+};
+
+class BakeRunner : public QObject {
+    Q_OBJECT
+public:
+    explicit BakeRunner(QObject* parent = nullptr);
+    ~BakeRunner() override; // cancels and waits: no worker outlives the runner
+
+    void start(const BakeRequest& request); // queued behind a running bake
+    void cancel();                          // the running bake and every queued one
+    bool isBusy() const { return m_running || !m_queue.empty(); }
+    // The bake running now, if any.
+    std::optional<BakeKind> current() const;
+
+signals:
+    void started(px::studio::BakeKind kind);
+    void progress(px::studio::BakeKind kind, double fraction);
+    void finished(const px::studio::BakeOutcome& outcome);
+    void idle();
+
+private:
+    void next();
+    void done();
+
+    std::deque<BakeRequest> m_queue;
+    std::optional<BakeRequest> m_runningRequest;
+    bool m_running = false;
+    std::shared_ptr<std::atomic<bool>> m_cancel;
+    QFutureWatcher<BakeOutcome> m_watcher;
+};
+
+} // namespace px::studio

@@ -1,0 +1,29 @@
+#pragma once
+// A view's error against the exact intersection, from two surface renders of the same view: each
+// pixel holds (u, v, t, fetches) of its hit, t < 0 where no surface was drawn. The error is the
+// distance between the two hits in texels of the height map (CONVENTIONS §5), over the pixels
+// where both found the surface.
+
+#include "parallax/image/Image.h"
+
+#include <QImage>
+#include <vector>
+
+namespace px::studio {
+
+struct SurfaceErrors {
+    int width = 0, height = 0;
+    std::vector<float> error; // per pixel, texels; negative: not on the surface
+    double meanError = 0.0;
+    double p99Error = 0.0; // nearest rank
+    double meanFetches = 0.0;
+    int pixels = 0;
+};
+
+SurfaceErrors compareSurfaces(const Image& hits, const Image& exact, int mapWidth, int mapHeight);
+
+// Blue (0 texels) through green (0.5) and yellow (1) to red (2 or more), translucent; clear where
+// there is no surface.
+QImage heatMapImage(const SurfaceErrors& errors);
+
+} // namespace px::studio

@@ -1,0 +1,47 @@
+#pragma once
+// Export: where to (the project's package, glTF, Godot, Unreal, Unity), into which folder, at
+// which bit depths. Runs in the background; never overwrites a folder unless asked to replace a
+// previous export.
+
+#include "parallax/export/Exporter.h"
+
+#include <QDialog>
+#include <QFutureWatcher>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+
+namespace px::studio {
+
+class ExportDialog : public QDialog {
+    Q_OBJECT
+public:
+    // `material` with absolute map paths; `materialFile` where it is saved.
+    ExportDialog(const Material& material, const QString& materialFile, QWidget* parent = nullptr);
+
+    ExportOptions options() const;
+    void startExport();
+    QString resultText() const;
+    bool isRunning() const { return m_watcher.isRunning(); }
+
+signals:
+    void exportFinished(bool ok);
+
+private:
+    Material m_material;
+    QString m_materialFile;
+    QComboBox* m_format;
+    QLineEdit* m_folder;
+    QComboBox* m_height;
+    QComboBox* m_normal;
+    QComboBox* m_green;
+    QCheckBox* m_force;
+    QLabel* m_result;
+    QPushButton* m_export;
+    QFutureWatcher<Result<ExportResult>> m_watcher;
+};
+
+} // namespace px::studio

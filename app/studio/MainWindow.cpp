@@ -1,0 +1,215 @@
+#include "MainWindow.h"
+
+#include "Baking.h"
+#include "ComparePanel.h"
+#include "GlSupport.h"
+#include "MainWindowActions.h"
+#include "MapsPanel.h"
+#include "MaterialDocument.h"
+#include "MaterialPanel.h"
+#include "RecentFiles.h"
+#include "TechniquePanel.h"
+#include "ViewPanel.h"
+#include "ViewportGrid.h"
+
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QStatusBar>
+#include <QUndoView>
+#include <QVBoxLayout>
+
+// The icons live in the studio library's resources: a static library needs them registered.
+static void initStudioResources() {
+    Q_INIT_RESOURCE(studio);
+}
+
+namespace px::studio {
+
+namespace {
+
+QScrollArea* scrolled(QWidget* content) {
+    auto* area = new QScrollArea;
+    area->setWidget(content);
+    area->setWidgetResizable(true);
+    area->setFrameShape(QFrame::NoFrame);
+    area->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    return area;
+}
+
+} // namespace
+
+MainWindow::MainWindow(const QString& liveReason, QWidget* parent)
+    : QMainWindow(parent), m_document(new MaterialDocument(this)), m_baker(new BakeRunner(this)),
+      m_recent(new RecentFiles(this)) {
+    initStudioResources();
+    setObjectName(QStringLiteral("MainWindow"));
+    setAcceptDrops(true);
+    setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+    createPanels(liveReason);
+    createActions();
+    createMenus();
+
+    m_rendererLabel = new QLabel(this);
+    const GlProbe& gl = probeOpenGl();
+    m_rendererLabel->setText(
+        liveReason.isEmpty() ? tr("OpenGL %1.%2 · %3").arg(gl.major).arg(gl.minor).arg(gl.renderer)
+                             : tr("No live preview"));
+    m_rendererLabel->setToolTip(liveReason.isEmpty() ? tr("The renderer of the live preview.")
+                                                     : liveReason);
+    statusBar()->addPermanentWidget(m_rendererLabel);
+    statusBar()->showMessage(tr("Drop maps, a folder or a material here. Drag in a view to "
+                                "orbit, Ctrl+drag to move the light."),
+                             8000);
+
+    connect(m_document, &MaterialDocument::dirtyChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &MaterialDocument::changed, this, &MainWindow::updateTitle);
+    connect(m_baker, &BakeRunner::finished, this, &MainWindow::onBakeFinished);
+    connect(m_recent, &RecentFiles::changed, this, &MainWindow::updateRecentMenu);
+    updateRecentMenu();
+    updateTitle();
+    resize(1400, 900);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createPanels(const QString& liveReason) {
+    m_viewports = new ViewportGrid(m_document, liveReason, this);
+    setCentralWidget(m_viewports);
+
+    auto* parameters = new QWidget;
+    auto* parametersLayout = new QVBoxLayout(parameters);
+    parametersLayout->setContentsMargins(4, 4, 4, 4);
+    m_techniquePanel = new TechniquePanel(m_document, parameters);
+    m_materialPanel = new MaterialPanel(m_document, parameters);
+    m_viewPanel = new ViewPanel(m_viewports, parameters);
+    parametersLayout->addWidget(m_techniquePanel);
+    parametersLayout->addWidget(m_materialPanel);
+    parametersLayout->addWidget(m_viewPanel);
+    parametersLayout->addStretch();
+    auto* parametersDock = new QDockWidget(tr("Parameters"), this);
+    parametersDock->setObjectName(QStringLiteral("ParametersDock"));
+    parametersDock->setWidget(scrolled(parameters));
+    addDockWidget(Qt::RightDockWidgetArea, parametersDock);
+
+    m_mapsPanel = new MapsPanel(m_document, m_baker);
+    auto* mapsDock = new QDockWidget(tr("Maps"), this);
+    mapsDock->setObjectName(QStringLiteral("MapsDock"));
+    mapsDock->setWidget(scrolled(m_mapsPanel));
+    addDockWidget(Qt::LeftDockWidgetArea, mapsDock);
+
+    auto* history = new QUndoView(m_document->undoStack());
+    history->setEmptyLabel(tr("<opened>"));
+    auto* historyDock = new QDockWidget(tr("History"), this);
+    historyDock->setObjectName(QStringLiteral("HistoryDock"));
+    historyDock->setWidget(history);
+    addDockWidget(Qt::LeftDockWidgetArea, historyDock);
+    tabifyDockWidget(mapsDock, historyDock);
+    mapsDock->raise();
+
+    m_comparePanel = new ComparePanel(m_document, this);
+    auto* compareDock = new QDockWidget(tr("Compare"), this);
+    compareDock->setObjectName(QStringLiteral("CompareDock"));
+    compareDock->setWidget(m_comparePanel);
+    addDockWidget(Qt::BottomDockWidgetArea, compareDock);
+    compareDock->hide();
+
+    connect(m_viewports, &ViewportGrid::activeViewportChanged, m_techniquePanel,
+            &TechniquePanel::setViewport);
+    connect(m_comparePanel, &ComparePanel::settingChosen, this,
+            [this](Technique technique, const TraceParams& params) {
+                const int v = m_viewports->activeViewport();
+                m_document->edit(tr("Viewport %1: %2 from Compare")
+                                     .arg(v + 1)
+                                     .arg(QString::fromUtf8(info(technique).name.data())),
+                                 [=](DocumentState& s) {
+                                     s.setView(v, {technique, params});
+                                 });
+                statusBar()->showMessage(
+                    tr("Viewport %1 now traces with %2 (%3).")
+                        .arg(v + 1)
+                        .arg(QString::fromUtf8(info(technique).title.data()))
+                        .arg(QString::fromStdString(settingLabel(technique, params))),
+                    6000);
+            });
+    connect(m_materialPanel, &MaterialPanel::problem, this, [this](const QString& message) {
+        showProblem(tr("Cannot read the height map"), message);
+    });
+    connect(m_materialPanel, &MaterialPanel::note, this,
+            [this](const QString& message) { statusBar()->showMessage(message, 8000); });
+    connect(m_mapsPanel, &MapsPanel::loadRequested, this, &MainWindow::importMapDialog);
+    connect(m_mapsPanel, &MapsPanel::fileDropped, this,
+            [this](MapKind kind, const QString& path) { loadMap(kind, path); });
+    connect(m_mapsPanel, &MapsPanel::bakeRequested, this, &MainWindow::startBake);
+}
+
+void MainWindow::updateTitle() {
+    setWindowTitle(tr("%1[*] — Parallax Studio").arg(m_document->displayName()));
+    setWindowModified(m_document->isDirty());
+}
+
+void MainWindow::showProblem(const QString& title, const QString& message) {
+    m_lastProblem = message;
+    statusBar()->showMessage(message.section(QLatin1Char('\n'), 0, 0), 10000);
+    emit problemShown(message);
+    if (!m_interactive)
+        return;
+    // Window-modal and non-blocking: the event loop (and any running bake) goes on.
+    auto* box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setWindowModality(Qt::WindowModal);
+    box->open();
+}
+
+void MainWindow::showNotes(const std::vector<std::string>& notes) {
+    QStringList lines;
+    for (const std::string& n : notes)
+        lines << QString::fromStdString(n);
+    if (!lines.isEmpty())
+        statusBar()->showMessage(lines.join(QLatin1Char(' ')), 10000);
+}
+
+void MainWindow::startBake(BakeKind kind) {
+    if (!m_document->state().hasMap(MapKind::Height)) {
+        showProblem(tr("Nothing to bake"), tr("Load a height map first."));
+        return;
+    }
+    m_baker->start(makeBakeRequest(m_document->state(), kind, m_mapsPanel->normalFilter()));
+    statusBar()->showMessage(
+        tr("Baking the %1 in the background (Esc cancels)…").arg(bakeTitle(kind)));
+}
+
+void MainWindow::onBakeFinished(const BakeOutcome& outcome) {
+    const QString what = bakeTitle(outcome.request.kind);
+    if (outcome.cancelled) {
+        statusBar()->showMessage(tr("The %1 bake was cancelled; nothing changed.").arg(what), 6000);
+        return;
+    }
+    if (!outcome.error.isEmpty()) {
+        showProblem(tr("Bake failed"), outcome.error);
+        return;
+    }
+    Result<DocumentState> next = withBake(m_document->state(), outcome);
+    if (!next) {
+        showProblem(tr("Bake discarded"), QString::fromStdString(next.error().message));
+        return;
+    }
+    m_document->edit(tr("Bake %1").arg(what), [&](DocumentState& s) { s = *next; });
+    statusBar()->showMessage(tr("Baked the %1 in %2 s; it is saved with the material.")
+                                 .arg(what)
+                                 .arg(outcome.seconds, 0, 'f', 2),
+                             8000);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    m_baker->cancel();
+    event->accept();
+}
+
+} // namespace px::studio

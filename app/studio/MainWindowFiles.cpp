@@ -1,0 +1,250 @@
+// MainWindow: opening, saving and importing, by menu, dialog and drop.
+
+#include "ExportDialog.h"
+#include "MainWindow.h"
+#include "MapLoading.h"
+#include "MaterialDocument.h"
+#include "MaterialSaver.h"
+#include "RecentFiles.h"
+#include "SampleMaterial.h"
+
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QStatusBar>
+
+namespace px::studio {
+
+namespace {
+
+const QString kImageFilter =
+    QObject::tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr *.bmp *.tga *.hdr);;All files (*)");
+const QString kMaterialFilter = QObject::tr("Materials (*.json);;All files (*)");
+
+bool isMaterialFile(const QString& path) {
+    return QFileInfo(path).suffix().compare(QLatin1String("json"), Qt::CaseInsensitive) == 0;
+}
+
+} // namespace
+
+void MainWindow::newSample(ProceduralMap kind, int size) {
+    if (!maybeSave())
+        return;
+    m_document->reset(makeSampleState(kind, size), {});
+    statusBar()->showMessage(
+        tr("The built-in %1 sample: its maps are made here and saved with "
+           "the material.")
+            .arg(QString::fromUtf8(proceduralMapNames()[static_cast<std::size_t>(kind)].data())),
+        8000);
+}
+
+bool MainWindow::openFile(const QString& path) {
+    if (!maybeSave())
+        return false;
+    Result<Loaded> loaded = openMaterialFile(path.toStdString());
+    if (!loaded) {
+        showProblem(tr("Cannot open the material"), QString::fromStdString(loaded.error().message));
+        return false;
+    }
+    m_document->reset(loaded->state, QFileInfo(path).absoluteFilePath());
+    m_recent->add(path);
+    showNotes(loaded->notes);
+    // A cone technique opened without a cone map file: bake it in the background.
+    const DocumentState& s = m_document->state();
+    const TechniqueInfo& t = info(s.material.technique);
+    if (t.needsConeMap && !s.hasMap(MapKind::Cone))
+        startBake(BakeKind::Cone);
+    if (t.needsRelaxedConeMap && !s.hasMap(MapKind::RelaxedCone))
+        startBake(BakeKind::RelaxedCone);
+    return true;
+}
+
+bool MainWindow::saveTo(const QString& path) {
+    Result<DocumentState> saved = saveDocumentState(m_document->state(), path.toStdString());
+    if (!saved) {
+        showProblem(tr("Cannot save the material"), QString::fromStdString(saved.error().message));
+        return false;
+    }
+    m_document->markSaved(*saved, QFileInfo(path).absoluteFilePath());
+    m_recent->add(path);
+    statusBar()->showMessage(tr("Saved %1.").arg(QFileInfo(path).fileName()), 5000);
+    return true;
+}
+
+bool MainWindow::save() {
+    if (m_document->filePath().isEmpty())
+        return saveAs();
+    return saveTo(m_document->filePath());
+}
+
+bool MainWindow::saveAs() {
+    QString suggestion = m_document->filePath();
+    if (suggestion.isEmpty())
+        suggestion = QString::fromStdString(m_document->material().name) + QStringLiteral(".json");
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save Material"), suggestion, kMaterialFilter);
+    if (path.isEmpty())
+        return false;
+    return saveTo(path);
+}
+
+bool MainWindow::maybeSave() {
+    if (!m_document->isDirty() || !m_interactive)
+        return true;
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved changes"),
+        tr("%1 has changes that are not saved. Save them?").arg(m_document->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::adopt(const QString& text, const DocumentState& state) {
+    m_document->edit(text, [&](DocumentState& s) { s = state; });
+}
+
+bool MainWindow::loadMap(MapKind kind, const QString& path, bool depth) {
+    if (kind == MapKind::Height && !depth)
+        depth = mapKindFromFileName(path.toStdString()).value_or(SuffixMatch{kind, false}).depth;
+    Result<Loaded> loaded = loadMapFile(m_document->state(), kind, path.toStdString(), depth);
+    if (!loaded) {
+        showProblem(
+            tr("Cannot load the %1 map").arg(QString::fromUtf8(mapTitle(kind).data()).toLower()),
+            QString::fromStdString(loaded.error().message));
+        return false;
+    }
+    adopt(tr("Load %1 map").arg(QString::fromUtf8(mapTitle(kind).data()).toLower()), loaded->state);
+    statusBar()->showMessage(tr("Loaded %1 as the %2 map.")
+                                 .arg(QFileInfo(path).fileName())
+                                 .arg(QString::fromUtf8(mapTitle(kind).data()).toLower()),
+                             6000);
+    showNotes(loaded->notes);
+    return true;
+}
+
+bool MainWindow::importFolder(const QString& folder) {
+    Result<FoundMaps> found = findMapsInFolder(folder.toStdString());
+    if (!found) {
+        showProblem(tr("Cannot import the folder"), QString::fromStdString(found.error().message));
+        return false;
+    }
+    Result<Loaded> loaded = loadMaps(m_document->state(), found->maps);
+    if (!loaded) {
+        showProblem(tr("Cannot import the folder"), QString::fromStdString(loaded.error().message));
+        return false;
+    }
+    adopt(tr("Import %1").arg(QFileInfo(folder).fileName()), loaded->state);
+    QStringList names;
+    for (const FoundMap& m : found->maps)
+        names << QString::fromUtf8(mapTitle(m.kind).data()).toLower();
+    statusBar()->showMessage(
+        tr("Imported %1 from %2.")
+            .arg(names.join(QStringLiteral(", ")), QFileInfo(folder).fileName()),
+        8000);
+    return true;
+}
+
+bool MainWindow::importFiles(const QStringList& paths) {
+    if (paths.size() == 1 && isMaterialFile(paths.front()))
+        return openFile(paths.front());
+    if (paths.size() == 1 && QFileInfo(paths.front()).isDir())
+        return importFolder(paths.front());
+    std::vector<std::string> files;
+    for (const QString& p : paths)
+        files.push_back(p.toStdString());
+    FoundMaps found = classifyFiles(files);
+    // One image with no known suffix: a height map is what this editor is about.
+    if (paths.size() == 1 && found.maps.empty())
+        return loadMap(MapKind::Height, paths.front());
+    if (found.maps.empty()) {
+        showProblem(tr("Nothing to import"),
+                    tr("None of the files has a map suffix (_albedo, _height, _disp, _normal, "
+                       "...): %1")
+                        .arg(paths.join(QStringLiteral(", "))));
+        return false;
+    }
+    Result<Loaded> loaded = loadMaps(m_document->state(), found.maps);
+    if (!loaded) {
+        showProblem(tr("Cannot import the maps"), QString::fromStdString(loaded.error().message));
+        return false;
+    }
+    adopt(tr("Import %n map(s)", nullptr, static_cast<int>(found.maps.size())), loaded->state);
+    showNotes(loaded->notes);
+    return true;
+}
+
+void MainWindow::openDialog() {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Material"), {}, kMaterialFilter);
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+void MainWindow::importMapDialog(MapKind kind) {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Load %1 Map").arg(QString::fromUtf8(mapTitle(kind).data())), {}, kImageFilter);
+    if (!path.isEmpty())
+        loadMap(kind, path);
+}
+
+void MainWindow::importFolderDialog() {
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Import a Folder of Maps"));
+    if (!folder.isEmpty())
+        importFolder(folder);
+}
+
+void MainWindow::exportDialog() {
+    if (m_document->state().anyUnsaved() || m_document->filePath().isEmpty()) {
+        const auto answer = QMessageBox::question(
+            this, tr("Save first"),
+            tr("Some maps were made here and have no file yet. Save the material first?"),
+            QMessageBox::Save | QMessageBox::Cancel, QMessageBox::Save);
+        if (answer != QMessageBox::Save || !save())
+            return;
+    }
+    ExportDialog dialog(m_document->material(), m_document->filePath(), this);
+    dialog.exec();
+}
+
+void MainWindow::updateRecentMenu() {
+    if (!m_recentMenu)
+        return;
+    m_recentMenu->clear();
+    for (const QString& file : m_recent->files()) {
+        QAction* a = m_recentMenu->addAction(QFileInfo(file).fileName());
+        a->setStatusTip(file);
+        connect(a, &QAction::triggered, this, [this, file] {
+            if (!openFile(file) && !QFileInfo::exists(file))
+                m_recent->remove(file);
+        });
+    }
+    if (!m_recent->files().isEmpty()) {
+        m_recentMenu->addSeparator();
+        m_recentMenu->addAction(tr("Clear Recent Files"), m_recent, &RecentFiles::clear);
+    }
+    m_recentMenu->setEnabled(!m_recent->files().isEmpty());
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    QStringList paths;
+    for (const QUrl& url : event->mimeData()->urls()) {
+        if (url.isLocalFile())
+            paths << url.toLocalFile();
+    }
+    if (paths.isEmpty())
+        return;
+    event->acceptProposedAction();
+    importFiles(paths);
+}
+
+} // namespace px::studio

@@ -1,0 +1,49 @@
+#pragma once
+// One map of the material in the maps panel: a thumbnail, where it comes from (its file, or made
+// here and not saved yet), and buttons to load, clear or bake it. Files dropped on the row load
+// as this map.
+
+#include "MapKind.h"
+
+#include <QWidget>
+
+class QLabel;
+class QToolButton;
+
+namespace px::studio {
+
+struct DocumentState;
+
+class MapRow : public QWidget {
+    Q_OBJECT
+public:
+    MapRow(MapKind kind, bool bakeable, QWidget* parent = nullptr);
+
+    MapKind kind() const { return m_kind; }
+    void refresh(const DocumentState& state);
+    void setBakeEnabled(bool enabled);
+    QToolButton* bakeButton() const { return m_bake; }
+    QToolButton* loadButton() const { return m_load; }
+    QString sourceText() const;
+
+signals:
+    void loadRequested(px::studio::MapKind kind);
+    void clearRequested(px::studio::MapKind kind);
+    void bakeRequested(px::studio::MapKind kind);
+    void fileDropped(px::studio::MapKind kind, const QString& path);
+
+protected:
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    MapKind m_kind;
+    QLabel* m_thumbnail;
+    QLabel* m_title;
+    QLabel* m_source;
+    QToolButton* m_load;
+    QToolButton* m_clear;
+    QToolButton* m_bake = nullptr;
+};
+
+} // namespace px::studio

@@ -1,0 +1,54 @@
+#pragma once
+// The material's own settings (what is saved): height scale and how the height map is read,
+// tiling and wrap, self-shadow, normals and lighting. Every change is an undoable edit.
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+
+namespace px::studio {
+
+class MaterialDocument;
+struct DocumentState;
+class SliderField;
+
+class MaterialPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit MaterialPanel(MaterialDocument* document, QWidget* parent = nullptr);
+
+    SliderField* heightScale() const { return m_heightScale; }
+    SliderField* tiling() const { return m_tiling; }
+    SliderField* softness() const { return m_softness; }
+    QCheckBox* selfShadow() const { return m_shadow; }
+
+signals:
+    void problem(const QString& message); // a file could not be read again
+    void note(const QString& message);    // something the status bar should say
+
+private:
+    void refresh();
+    void bindSlider(SliderField* field, const QString& text, const QString& key,
+                    void (*apply)(DocumentState&, double));
+    // Invert and channel change how the height file is read: read it again, or refuse.
+    void rereadHeight(const QString& text, bool depth, int channel);
+
+    MaterialDocument* m_document;
+    SliderField* m_heightScale;
+    QCheckBox* m_depth;
+    QComboBox* m_channel;
+    SliderField* m_tiling;
+    QComboBox* m_wrap;
+    QCheckBox* m_shadow;
+    SliderField* m_softness;
+    QComboBox* m_normalSource;
+    QComboBox* m_normalGreen;
+    QComboBox* m_lighting;
+    SliderField* m_specular;
+    SliderField* m_shininess;
+    SliderField* m_roughness;
+    SliderField* m_metallic;
+};
+
+} // namespace px::studio

@@ -1,0 +1,165 @@
+#include "PreviewRenderer.h"
+
+#include "ErrorStats.h"
+#include "Renderer.h" // parallax-render
+
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
+#include <QOpenGLFunctions>
+#include <chrono>
+
+namespace px::studio {
+
+namespace {
+
+// The error figures are taken at this many pixels on the long side of the view: enough pixels
+// for a p99, few enough for llvmpipe to trace `exact` in a moment.
+constexpr int kMeasureSide = 200;
+
+// A dark neutral backdrop, sRGB-encoded as the colour output is.
+constexpr glm::vec4 kBackground{0.16f, 0.17f, 0.19f, 1.0f};
+
+QOpenGLFunctions* gl() {
+    return QOpenGLContext::currentContext()->functions();
+}
+
+} // namespace
+
+struct PreviewRenderer::Impl {
+    std::unique_ptr<Renderer> renderer;
+    std::unique_ptr<GpuMaterial> gpu;
+    std::shared_ptr<const MaterialAssets> uploaded; // what `gpu` holds
+    WrapMode uploadedWrap = WrapMode::Repeat;
+    std::optional<VariantKey> lastKey; // the variant of the last frame (uniformValue)
+
+    // Uploads the scene's maps when they are not the ones on the GPU.
+    Status sync(const PreviewScene& scene) {
+        if (gpu && uploaded == scene.assets && uploadedWrap == scene.material.wrap)
+            return success();
+        Result<std::unique_ptr<GpuMaterial>> created =
+            GpuMaterial::create(*scene.assets, scene.material.wrap);
+        if (!created)
+            return created.error();
+        gpu = std::move(*created);
+        uploaded = scene.assets;
+        uploadedWrap = scene.material.wrap;
+        return success();
+    }
+
+    DrawOptions options(const PreviewScene& scene) const {
+        DrawOptions o;
+        o.mesh = scene.view.mesh;
+        o.background = kBackground;
+        return o;
+    }
+};
+
+PreviewRenderer::~PreviewRenderer() = default;
+
+Result<std::unique_ptr<PreviewRenderer>> PreviewRenderer::create() {
+    Result<std::unique_ptr<Renderer>> renderer = Renderer::create();
+    if (!renderer)
+        return renderer.error();
+    std::unique_ptr<PreviewRenderer> preview(new PreviewRenderer);
+    preview->m_impl = std::make_unique<Impl>();
+    preview->m_impl->renderer = std::move(*renderer);
+    return preview;
+}
+
+Result<double> PreviewRenderer::draw(const PreviewScene& scene, QSize pixels, unsigned fbo) {
+    Impl& d = *m_impl;
+    const auto start = std::chrono::steady_clock::now();
+    QOpenGLFunctions* f = gl();
+    f->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    const glm::ivec2 size(pixels.width(), pixels.height());
+    if (!scene.traceable || !scene.assets) {
+        f->glViewport(0, 0, size.x, size.y);
+        f->glClearColor(kBackground.r, kBackground.g, kBackground.b, 1.0f);
+        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        return 0.0;
+    }
+    if (Status s = d.sync(scene); !s)
+        return s.error();
+    const DrawOptions options = d.options(scene);
+    if (Status s = d.renderer->draw(*d.gpu, scene.material, scene.view.camera, scene.view.light,
+                                    options, size);
+        !s)
+        return s.error();
+    d.lastKey = d.renderer->variantFor(*d.gpu, scene.material, options);
+    if (scene.overlays.wipe) {
+        // B on the right of the divider: the same view again, scissored.
+        Material b = scene.material;
+        b.technique = scene.overlays.wipeTechnique;
+        b.params = info(b.technique).defaults;
+        const int x = static_cast<int>(scene.overlays.wipePosition * size.x);
+        f->glEnable(GL_SCISSOR_TEST);
+        f->glScissor(x, 0, size.x - x, size.y);
+        const Status s =
+            d.renderer->draw(*d.gpu, b, scene.view.camera, scene.view.light, options, size);
+        f->glDisable(GL_SCISSOR_TEST);
+        if (!s)
+            return s.error();
+    }
+    f->glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+Result<PreviewStats> PreviewRenderer::measure(const PreviewScene& scene, QSize pixels,
+                                              double frameMs) {
+    Impl& d = *m_impl;
+    PreviewStats stats;
+    stats.frameMs = frameMs;
+    if (!scene.traceable || !scene.assets || scene.assets->height.empty()) {
+        m_heatMap = {};
+        return stats;
+    }
+    if (Status s = d.sync(scene); !s)
+        return s.error();
+    const double scale = std::min(1.0, double(kMeasureSide) /
+                                           std::max(1, std::max(pixels.width(), pixels.height())));
+    const glm::ivec2 size(std::max(1, int(pixels.width() * scale)),
+                          std::max(1, int(pixels.height() * scale)));
+    DrawOptions options = d.options(scene);
+    options.output = ShaderOutput::Surface;
+    Result<Image> hits = d.renderer->renderImage(*d.gpu, scene.material, scene.view.camera,
+                                                 scene.view.light, options, size);
+    if (!hits)
+        return hits.error();
+    Material exact = scene.material;
+    exact.technique = Technique::Exact;
+    exact.params = info(Technique::Exact).defaults;
+    Result<Image> reference =
+        d.renderer->renderImage(*d.gpu, exact, scene.view.camera, scene.view.light, options, size);
+    if (!reference)
+        return reference.error();
+    const SurfaceErrors errors =
+        compareSurfaces(*hits, *reference, scene.assets->height.width, scene.assets->height.height);
+    stats.fetchesPerPixel = errors.meanFetches;
+    stats.meanError = errors.meanError;
+    stats.p99Error = errors.p99Error;
+    stats.pixels = errors.pixels;
+    stats.valid = true;
+    m_heatMap = heatMapImage(errors);
+    return stats;
+}
+
+std::optional<float> PreviewRenderer::uniformValue(const std::string& name) {
+    Impl& d = *m_impl;
+    if (!d.lastKey)
+        return std::nullopt;
+    Result<const ShaderProgram*> program = d.renderer->shaders().program(*d.lastKey);
+    if (!program)
+        return std::nullopt;
+    const int location = (*program)->location(name);
+    if (location < 0)
+        return std::nullopt;
+    auto* f = QOpenGLContext::currentContext()->extraFunctions();
+    // Room for a mat4: GL writes every component of the uniform; the first is returned. It
+    // converts int uniforms too.
+    float values[16] = {};
+    f->glGetUniformfv((*program)->id(), location, values);
+    return values[0];
+}
+
+} // namespace px::studio

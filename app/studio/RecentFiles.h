@@ -1,0 +1,28 @@
+#pragma once
+// The most recently opened or saved materials, newest first, kept in the user's settings.
+
+#include <QObject>
+#include <QStringList>
+
+namespace px::studio {
+
+class RecentFiles : public QObject {
+    Q_OBJECT
+public:
+    static constexpr int kMaxFiles = 10;
+    explicit RecentFiles(QObject* parent = nullptr);
+
+    QStringList files() const { return m_files; }
+    void add(const QString& path);
+    void remove(const QString& path);
+    void clear();
+
+signals:
+    void changed();
+
+private:
+    void store();
+    QStringList m_files;
+};
+
+} // namespace px::studio

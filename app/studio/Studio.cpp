@@ -1,0 +1,93 @@
+#include "Studio.h"
+
+#include "GlSupport.h"
+#include "GlUnavailableDialog.h"
+#include "MainWindow.h"
+#include "Screenshot.h"
+#include "StudioOptions.h"
+
+#include <QApplication>
+#include <QIcon>
+#include <cstdio>
+
+namespace px::studio {
+
+int runStudio(int argc, char** argv) {
+    setDefaultSurfaceFormat();
+    // Fractional scale factors (125 %, 150 %) as they are, not rounded: sharp text and views.
+    QGuiApplication::setHighDpiScaleFactorRoundingPolicy(
+        Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("parallax-studio"));
+    QApplication::setApplicationName(QStringLiteral("parallax-studio"));
+    QApplication::setApplicationDisplayName(QStringLiteral("Parallax Studio"));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/parallax-studio.svg")));
+
+    QStringList arguments;
+    for (int i = 1; i < argc; ++i)
+        arguments << QString::fromLocal8Bit(argv[i]);
+    if (arguments.contains(QLatin1String("--help")) || arguments.contains(QLatin1String("-h"))) {
+        std::fputs(qPrintable(studioUsage()), stdout);
+        return 0;
+    }
+    Result<StudioOptions> options = parseStudioOptions(arguments);
+    if (!options) {
+        std::fprintf(stderr, "error: %s\n", options.error().message.c_str());
+        return 2;
+    }
+
+    const GlProbe& gl = probeOpenGl();
+    QString liveReason;
+    if (!gl.usable) {
+        liveReason = gl.offscreenPlatform ? gl.reason : glUnavailableMessage(gl);
+        if (!options->screenshot.isEmpty()) {
+            std::fprintf(stderr, "error: %s\n", qPrintable(liveReason));
+            return 1;
+        }
+        if (!gl.offscreenPlatform) {
+            switch (askAboutMissingGl(gl)) {
+            case GlChoice::RestartInSoftware:
+                if (restartWithSoftwareRendering())
+                    return 0;
+                std::fprintf(stderr, "error: could not restart with software rendering\n");
+                break;
+            case GlChoice::ContinueWithoutPreview:
+                break;
+            case GlChoice::Quit:
+                return 1;
+            }
+        }
+    }
+
+    MainWindow window(liveReason);
+    const bool screenshot = !options->screenshot.isEmpty();
+    if (screenshot) {
+        window.setInteractive(false);
+        QObject::connect(&window, &MainWindow::problemShown, [](const QString& message) {
+            std::fprintf(stderr, "error: %s\n", qPrintable(message));
+        });
+    }
+    const bool opened = !options->file.isEmpty() && window.openFile(options->file);
+    if (!opened && !options->file.isEmpty() && screenshot)
+        return 1;
+    if (!opened) // no file, or it could not be opened (the message says why): the sample
+        window.newSample(options->sample, options->sampleSize);
+    if (screenshot) {
+        window.resize(options->windowSize);
+        applyViewOptions(window, *options);
+        window.show();
+        const QString error = takeScreenshot(window, options->screenshot);
+        if (!error.isEmpty()) {
+            std::fprintf(stderr, "error: %s\n", qPrintable(error));
+            return 1;
+        }
+        std::printf("wrote %s\n", qPrintable(options->screenshot));
+        return 0;
+    }
+    if (options->layout != 0)
+        applyViewOptions(window, *options);
+    window.show();
+    return app.exec();
+}
+
+} // namespace px::studio

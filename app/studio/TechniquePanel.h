@@ -1,0 +1,67 @@
+#pragma once
+// The technique and quality of the active viewport (viewport 1's are the material's): layers,
+// the seeds' quality range, refinement steps and the step cap, each shown only where the
+// technique reads it.
+
+#include "parallax/trace/Technique.h"
+
+#include <QWidget>
+#include <functional>
+
+class QDoubleSpinBox;
+class QGroupBox;
+class QLabel;
+class QPushButton;
+
+namespace px::studio {
+
+class MaterialDocument;
+class RangeSlider;
+class SliderField;
+class TechniqueCombo;
+struct ViewQuality;
+
+class TechniquePanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit TechniquePanel(MaterialDocument* document, QWidget* parent = nullptr);
+
+    int viewport() const { return m_viewport; }
+    void setViewport(int index); // 0-based
+
+    TechniqueCombo* techniqueCombo() const { return m_technique; }
+    SliderField* minLayers() const { return m_minLayers; }
+    SliderField* maxLayers() const { return m_maxLayers; }
+    RangeSlider* qualityRange() const { return m_quality; }
+    SliderField* binarySteps() const { return m_binary; }
+    SliderField* secantSteps() const { return m_secant; }
+    SliderField* stepCap() const { return m_cap; }
+
+private:
+    void refresh();
+    void editQuality(const QString& text, const QString& key,
+                     const std::function<void(ViewQuality&)>& change);
+    void setQualityRange(double low, double high);
+
+    MaterialDocument* m_document;
+    int m_viewport = 0;
+    QGroupBox* m_box;
+    TechniqueCombo* m_technique;
+    SliderField* m_minLayers;
+    SliderField* m_maxLayers;
+    QWidget* m_qualityRow;
+    RangeSlider* m_quality;
+    QDoubleSpinBox* m_qualityLow;
+    QDoubleSpinBox* m_qualityHigh;
+    SliderField* m_binary;
+    SliderField* m_secant;
+    SliderField* m_cap;
+    QPushButton* m_defaults;
+    QPushButton* m_useForMaterial;
+};
+
+// The seeds' quality (seed 000: numSteps = clamp(quality * 50, 1, 50)) and layers.
+int layersForQuality(double quality);
+double qualityForLayers(int layers);
+
+} // namespace px::studio

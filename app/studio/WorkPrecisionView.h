@@ -1,0 +1,48 @@
+#pragma once
+// The work-precision diagram of one panel (one polar angle, one cost axis): p99 error against
+// cost on log-log axes, one curve per technique across its settings, the Pareto front dashed.
+// Hovering a point says what it is; clicking it picks it.
+
+#include "parallax/eval/WorkPrecision.h"
+
+#include <QWidget>
+#include <optional>
+
+namespace px::studio {
+
+class WorkPrecisionView : public QWidget {
+    Q_OBJECT
+public:
+    explicit WorkPrecisionView(QWidget* parent = nullptr);
+
+    void setPanel(const WorkPrecisionPanel& panel);
+    void clear();
+    bool hasPanel() const { return m_panel.has_value(); }
+    const WorkPrecisionPanel& panel() const { return *m_panel; }
+    // Where a point is drawn, in widget coordinates (tests click there).
+    QPointF pointPosition(PointRef ref) const;
+
+    QSize sizeHint() const override { return {520, 320}; }
+    QSize minimumSizeHint() const override { return {240, 160}; }
+
+    static QColor techniqueColour(Technique technique);
+
+signals:
+    void pointClicked(const px::WorkPrecisionPoint& point);
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+
+private:
+    QRectF plotRect() const;
+    QPointF toWidget(double cost, double error) const;
+    std::optional<PointRef> pointAt(QPointF position) const;
+
+    std::optional<WorkPrecisionPanel> m_panel;
+    std::optional<PointRef> m_hover;
+};
+
+} // namespace px::studio

@@ -1,0 +1,78 @@
+#pragma once
+// What the editor's GUI tests share: a small window on a small sample, waiting for frames and
+// figures, and dropping files on a widget the way a file manager does.
+
+#include "GlSupport.h"
+#include "MainWindow.h"
+#include "MaterialDocument.h"
+#include "PreviewWidget.h"
+#include "Viewport.h"
+#include "ViewportGrid.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QDropEvent>
+#include <QMimeData>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUrl>
+#include <memory>
+
+namespace px::studio::test {
+
+// Keeps the tests' recent files out of the user's settings.
+inline void isolateSettings(const QTemporaryDir& dir) {
+    QCoreApplication::setOrganizationName(QStringLiteral("parallax-studio-tests"));
+    QCoreApplication::setApplicationName(QStringLiteral("parallax-studio-tests"));
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir.path());
+}
+
+// A window on the built-in bricks at `size` texels, `layout` viewports, shown and exposed.
+// Problems go to lastProblem() unless `interactive`.
+inline std::unique_ptr<MainWindow> makeWindow(int layout = 1, int size = 64,
+                                              bool interactive = false) {
+    const GlProbe& gl = probeOpenGl();
+    auto window = std::make_unique<MainWindow>(gl.usable ? QString() : gl.reason);
+    window->setInteractive(interactive);
+    window->newSample(ProceduralMap::Bricks, size);
+    window->viewports()->setLayoutCount(layout);
+    window->resize(layout == 1 ? 900 : 1100, 560); // views well under 512 x 512
+    window->show();
+    window->activateWindow();
+    if (!QTest::qWaitForWindowExposed(window.get()))
+        return nullptr;
+    return window;
+}
+
+// Waits until the preview has drawn a frame after now and measured its view.
+inline bool waitForFigures(PreviewWidget* preview, int timeoutMs = 30000) {
+    const int frames = preview->framesRendered();
+    return QTest::qWaitFor(
+        [&] { return preview->framesRendered() > frames && preview->stats().valid; }, timeoutMs);
+}
+
+// Waits until the preview has drawn at least one frame more than `frames`.
+inline bool waitForFrame(PreviewWidget* preview, int frames, int timeoutMs = 30000) {
+    preview->update();
+    return QTest::qWaitFor([&] { return preview->framesRendered() > frames; }, timeoutMs);
+}
+
+// Drops local files on `target` as a file manager would: drag enter, then drop.
+inline bool dropFiles(QWidget* target, const QStringList& files) {
+    QMimeData mime;
+    QList<QUrl> urls;
+    for (const QString& f : files)
+        urls << QUrl::fromLocalFile(f);
+    mime.setUrls(urls);
+    const QPointF at(target->width() / 2.0, target->height() / 2.0);
+    QDragEnterEvent enter(at.toPoint(), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(target, &enter);
+    if (!enter.isAccepted())
+        return false;
+    QDropEvent drop(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(target, &drop);
+    return drop.isAccepted();
+}
+
+} // namespace px::studio::test

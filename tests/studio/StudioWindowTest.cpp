@@ -1,0 +1,320 @@
+// The editor driven as a user would, under Xvfb with llvmpipe: sliders reach the preview's pixels
+// and the shader's uniforms, viewports trace different techniques, files load by drag and drop,
+// baking a cone map enables the cone technique, undo restores, and a corrupt file changes nothing.
+
+#include "MapRow.h"
+#include "MapsPanel.h"
+#include "MaterialPanel.h"
+#include "SliderField.h"
+#include "StudioTestSupport.h"
+#include "TechniqueCombo.h"
+#include "TechniquePanel.h"
+#include "parallax/image/ImageFile.h"
+#include "parallax/io/AtomicWrite.h"
+#include "parallax/material/MaterialFile.h"
+
+#include <QCheckBox>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSlider>
+#include <QToolButton>
+
+using namespace px;
+using namespace px::studio;
+using namespace px::studio::test;
+
+namespace {
+
+// Pixels whose colour differs by more than a few levels.
+int changedPixels(const QImage& a, const QImage& b) {
+    if (a.size() != b.size())
+        return a.width() * a.height();
+    const QImage x = a.convertToFormat(QImage::Format_RGB32);
+    const QImage y = b.convertToFormat(QImage::Format_RGB32);
+    int changed = 0;
+    for (int j = 0; j < x.height(); ++j) {
+        const auto* p = reinterpret_cast<const QRgb*>(x.constScanLine(j));
+        const auto* q = reinterpret_cast<const QRgb*>(y.constScanLine(j));
+        for (int i = 0; i < x.width(); ++i) {
+            const int d = std::abs(qRed(p[i]) - qRed(q[i])) +
+                          std::abs(qGreen(p[i]) - qGreen(q[i])) +
+                          std::abs(qBlue(p[i]) - qBlue(q[i]));
+            changed += d > 12;
+        }
+    }
+    return changed;
+}
+
+std::string writeRamp(const QTemporaryDir& dir, const char* name, int size) {
+    Image image(size, size, 1);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            image.at(x, y) = float((x + y) % 8) / 7.0f;
+    const std::string path = dir.filePath(name).toStdString();
+    return writeImage(path, image, {PixelFormat::UInt16, false}) ? path : std::string();
+}
+
+} // namespace
+
+class StudioWindowTest : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+public:
+    static void initMain() { setDefaultSurfaceFormat(); }
+
+private slots:
+    void initTestCase() {
+        isolateSettings(m_dir);
+        QVERIFY2(probeOpenGl().usable, qPrintable(probeOpenGl().reason));
+    }
+
+    void sliderChangesPixelsAndUniforms() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(preview);
+        QVERIFY(waitForFigures(preview));
+        QVERIFY2(preview->renderError().isEmpty(), qPrintable(preview->renderError()));
+        const QImage before = preview->grabFramebuffer();
+        QCOMPARE(preview->uniformValue("pxScale").value_or(-1), 0.06f);
+
+        // Page Up on the height scale slider, as a user would.
+        QSlider* slider = w->materialPanel()->heightScale()->slider();
+        slider->setFocus();
+        QTest::keyClick(slider, Qt::Key_PageUp);
+        const float scale = w->document()->material().heightScale;
+        QVERIFY(scale > 0.08f);
+        QVERIFY(waitForFrame(preview, preview->framesRendered()));
+        QCOMPARE(preview->uniformValue("pxScale").value_or(-1), scale);
+        const QImage after = preview->grabFramebuffer();
+        QVERIFY2(changedPixels(before, after) > before.width() * before.height() / 50,
+                 "deeper relief must move the pixels");
+
+        // The layers slider reaches its uniform too.
+        QSlider* layers = w->techniquePanel()->maxLayers()->slider();
+        layers->setFocus();
+        QTest::keyClick(layers, Qt::Key_PageUp);
+        const int maxLayers = w->document()->material().params.maxLayers;
+        QVERIFY(maxLayers > 32);
+        QVERIFY(waitForFrame(preview, preview->framesRendered()));
+        QCOMPARE(preview->uniformValue("pxMaxLayers").value_or(-1), float(maxLayers));
+    }
+
+    void viewportsTraceDifferentTechniques() {
+        auto w = makeWindow(2);
+        QVERIFY(w);
+        Viewport* left = w->viewports()->viewport(0);
+        Viewport* right = w->viewports()->viewport(1);
+        QVERIFY(waitForFigures(right->preview()));
+        // Type the technique's name into viewport 2's chooser.
+        right->techniqueCombo()->setFocus();
+        QTest::keyClicks(right->techniqueCombo(), "offset");
+        QCOMPARE(w->document()->state().view(1).technique, Technique::Offset);
+        QCOMPARE(w->document()->state().view(0).technique, Technique::Pom);
+        QVERIFY(waitForFigures(right->preview()));
+        QVERIFY(waitForFigures(left->preview()) || left->preview()->stats().valid);
+        // The march has a layer count; offset limiting has none: different shaders.
+        QVERIFY(left->preview()->uniformValue("pxMaxLayers").has_value());
+        QVERIFY(!right->preview()->uniformValue("pxMaxLayers").has_value());
+        const QImage a = left->preview()->grabFramebuffer();
+        const QImage b = right->preview()->grabFramebuffer();
+        QVERIFY2(changedPixels(a, b) > a.width() * a.height() / 100,
+                 "pom and offset must not draw the same picture");
+        // Offset limiting is far from exact where pom is close.
+        QVERIFY(right->preview()->stats().meanError > left->preview()->stats().meanError);
+        QVERIFY(right->statsText().contains(QLatin1String("offset")));
+    }
+
+    void dropLoadsMaps() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        const std::string ramp = writeRamp(m_dir, "wall_height.png", 32);
+        QVERIFY(!ramp.empty());
+        QVERIFY(dropFiles(w.get(), {QString::fromStdString(ramp)}));
+        QCOMPARE(w->document()->state().assets->height.width, 32);
+        QVERIFY(w->mapsPanel()->row(MapKind::Height)->sourceText().contains("wall_height.png"));
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        QVERIFY(preview->renderError().isEmpty());
+
+        // A file dropped on a map's row loads as that map, whatever its name.
+        Image colour(32, 32, 3);
+        for (float& p : colour.pixels)
+            p = 0.5f;
+        const std::string plain = m_dir.filePath("photo.png").toStdString();
+        QVERIFY(writeImage(plain, colour, {}));
+        QVERIFY(dropFiles(w->mapsPanel()->row(MapKind::Albedo), {QString::fromStdString(plain)}));
+        QCOMPARE(w->document()->state().assets->albedo.width, 32);
+
+        // A material dropped on the window opens.
+        const std::string material = m_dir.filePath("dropped.json").toStdString();
+        Material m;
+        m.name = "dropped";
+        m.maps.height = "wall_height.png";
+        m.heightScale = 0.02f;
+        QVERIFY(saveMaterial(m, material));
+        w->document()->reset(w->document()->state(), {}); // nothing unsaved to ask about
+        QVERIFY(dropFiles(w.get(), {QString::fromStdString(material)}));
+        QCOMPARE(w->document()->material().heightScale, 0.02f);
+        QCOMPARE(QFileInfo(w->document()->filePath()).fileName(), QString("dropped.json"));
+    }
+
+    void bakingAConeMapEnablesCone() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        TechniqueCombo* combo = w->viewports()->viewport(0)->techniqueCombo();
+        QVERIFY(!combo->isAvailable(Technique::Cone));
+        QVERIFY(!w->techniquePanel()->techniqueCombo()->isAvailable(Technique::Cone));
+        QToolButton* bake = w->mapsPanel()->row(MapKind::Cone)->bakeButton();
+        QVERIFY(bake && bake->isEnabled());
+        QTest::mouseClick(bake, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 60000);
+        QVERIFY(w->document()->state().hasMap(MapKind::Cone));
+        QVERIFY(w->document()->state().isUnsaved(MapKind::Cone));
+        QVERIFY(combo->isAvailable(Technique::Cone));
+        QVERIFY(w->techniquePanel()->techniqueCombo()->isAvailable(Technique::Cone));
+        QCOMPARE(w->mapsPanel()->progressBar()->value(), 100);
+
+        combo->setFocus();
+        QTest::keyClicks(combo, "cone");
+        QCOMPARE(w->document()->material().technique, Technique::Cone);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        QVERIFY2(preview->renderError().isEmpty(), qPrintable(preview->renderError()));
+        QVERIFY(preview->uniformValue("pxMaxSteps").has_value());
+        // The bake is one undo step: undoing it takes the cone technique away again.
+        w->document()->undoStack()->undo(); // the technique
+        w->document()->undoStack()->undo(); // the bake
+        QVERIFY(!w->document()->state().hasMap(MapKind::Cone));
+        QVERIFY(!combo->isAvailable(Technique::Cone));
+    }
+
+    void cancelledBakeChangesNothing() {
+        auto w = makeWindow(1, 768);
+        QVERIFY(w);
+        const int steps = w->document()->undoStack()->count();
+        w->startBake(BakeKind::RelaxedCone);
+        QVERIFY(w->baker()->isBusy());
+        QVERIFY(w->mapsPanel()->cancelButton()->isEnabled());
+        QTest::mouseClick(w->mapsPanel()->cancelButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 60000);
+        QVERIFY(!w->document()->state().hasMap(MapKind::RelaxedCone));
+        QCOMPARE(w->document()->undoStack()->count(), steps);
+        QVERIFY(w->lastProblem().isEmpty());
+    }
+
+    void undoRestoresThePreviousState() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        MaterialDocument* doc = w->document();
+        const std::string json = materialToJson(doc->material());
+        const auto assets = doc->state().assets;
+
+        QSlider* slider = w->materialPanel()->heightScale()->slider();
+        slider->setFocus();
+        QTest::keyClick(slider, Qt::Key_PageUp);
+        QTest::keyClick(slider, Qt::Key_PageUp);
+        w->materialPanel()->selfShadow()->setFocus();
+        QTest::keyClick(w->materialPanel()->selfShadow(), Qt::Key_Space);
+        QVERIFY(doc->material().selfShadow);
+        const std::string ramp = writeRamp(m_dir, "undo_height.png", 16);
+        QVERIFY(dropFiles(w.get(), {QString::fromStdString(ramp)}));
+        QCOMPARE(doc->state().assets->height.width, 16);
+        QVERIFY(doc->isDirty());
+        QVERIFY(waitForFrame(preview, preview->framesRendered()));
+
+        // Ctrl+Z until nothing is left: the sample as it was opened.
+        for (int i = 0; i < doc->undoStack()->count(); ++i) {
+            w->activateWindow();
+            QTest::keySequence(w.get(), QKeySequence::Undo);
+        }
+        QCOMPARE(doc->undoStack()->index(), 0);
+        QCOMPARE(materialToJson(doc->material()), json);
+        QVERIFY(doc->state().assets == assets);
+        QVERIFY(!doc->isDirty());
+        QVERIFY(waitForFrame(preview, preview->framesRendered()));
+        QCOMPARE(preview->uniformValue("pxScale").value_or(-1), 0.06f);
+        QCOMPARE(w->materialPanel()->heightScale()->value(), 0.06);
+        // And redo brings the last edit back.
+        QTest::keySequence(w.get(), QKeySequence::Redo);
+        QVERIFY(doc->material().heightScale > 0.06f);
+    }
+
+    void corruptFileShowsAnErrorAndChangesNothing() {
+        auto w = makeWindow(1, 64, true);
+        QVERIFY(w);
+        MaterialDocument* doc = w->document();
+        const std::string json = materialToJson(doc->material());
+        const auto assets = doc->state().assets;
+        const int steps = doc->undoStack()->count();
+        const std::string bad = m_dir.filePath("broken_height.png").toStdString();
+        QVERIFY(writeTextFile(bad, "not an image at all"));
+        QVERIFY(dropFiles(w.get(), {QString::fromStdString(bad)}));
+
+        QMessageBox* box = nullptr;
+        QTRY_VERIFY((box = w->findChild<QMessageBox*>()) && box->isVisible());
+        QVERIFY2(box->text().contains("broken_height.png"), qPrintable(box->text()));
+        QCOMPARE(materialToJson(doc->material()), json);
+        QVERIFY(doc->state().assets == assets);
+        QCOMPARE(doc->undoStack()->count(), steps);
+        QVERIFY(!doc->isDirty());
+        box->close();
+
+        // A corrupt material file: the same.
+        const std::string badJson = m_dir.filePath("broken.json").toStdString();
+        QVERIFY(writeTextFile(badJson, "{ \"format\": \"parallax-studio-material\", "));
+        QVERIFY(dropFiles(w.get(), {QString::fromStdString(badJson)}));
+        QVERIFY(w->lastProblem().contains("broken.json"));
+        QVERIFY(doc->state().assets == assets);
+        QVERIFY(doc->filePath().isEmpty());
+    }
+
+    void heatMapAndWipeDraw() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        Viewport* v = w->viewports()->viewport(0);
+        PreviewWidget* preview = v->preview();
+        QVERIFY(waitForFigures(preview));
+        const QImage plain = preview->grabFramebuffer();
+        QTest::mouseClick(v->heatMapButton(), Qt::LeftButton);
+        QVERIFY(preview->scene().overlays.heatMap);
+        QVERIFY(waitForFigures(preview));
+        const QImage heat = preview->grabFramebuffer();
+        QVERIFY(changedPixels(plain, heat) > plain.width() * plain.height() / 10);
+        QTest::mouseClick(v->heatMapButton(), Qt::LeftButton);
+        QTest::mouseClick(v->wipeButton(), Qt::LeftButton);
+        QVERIFY(preview->scene().overlays.wipe);
+        QVERIFY(v->wipeCombo()->isVisible());
+        QVERIFY(waitForFigures(preview));
+        QVERIFY2(preview->renderError().isEmpty(), qPrintable(preview->renderError()));
+    }
+
+    void ctrlDragMovesTheLightOfLinkedViews() {
+        auto w = makeWindow(2);
+        QVERIFY(w);
+        PreviewWidget* left = w->viewports()->viewport(0)->preview();
+        const float before = left->scene().view.light.azimuthDeg;
+        const QPoint c = left->rect().center();
+        QTest::mousePress(left, Qt::LeftButton, Qt::ControlModifier, c);
+        QTest::mouseMove(left, c + QPoint(80, 0));
+        QTest::mouseRelease(left, Qt::LeftButton, Qt::ControlModifier, c + QPoint(80, 0));
+        const float after = left->scene().view.light.azimuthDeg;
+        QVERIFY(std::abs(after - before) > 5.0f);
+        QCOMPARE(w->viewports()->viewport(1)->view().light.azimuthDeg, after);
+        // Unlinked, a plain drag orbits only its own view.
+        w->viewports()->setLinked(false);
+        const float camera = w->viewports()->viewport(1)->view().camera.azimuthDeg;
+        QTest::mousePress(left, Qt::LeftButton, Qt::NoModifier, c);
+        QTest::mouseMove(left, c + QPoint(60, 0));
+        QTest::mouseRelease(left, Qt::LeftButton, Qt::NoModifier, c + QPoint(60, 0));
+        QVERIFY(left->scene().view.camera.azimuthDeg != camera);
+        QCOMPARE(w->viewports()->viewport(1)->view().camera.azimuthDeg, camera);
+    }
+};
+
+QTEST_MAIN(StudioWindowTest)
+#include "StudioWindowTest.moc"
