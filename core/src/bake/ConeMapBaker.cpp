@@ -4,11 +4,20 @@
 
 namespace px {
 
-ConeMap bakeConeMap(const HeightField& field, WrapMode wrap, ConeKind kind) {
-    ConeMap cones = kind == ConeKind::Conservative ? bakeConservativeConesBruteForce(field, wrap)
-                                                   : bakeRelaxedConesBruteForce(field, wrap);
-    applyNeighbourhoodMinimum(cones, wrap);
+Result<ConeMap> bakeConeMap(const HeightField& field, WrapMode wrap, ConeKind kind,
+                            const BakeControl& control) {
+    Result<ConeMap> cones = kind == ConeKind::Conservative
+                                ? bakeQuickConeMap(field, wrap, control)
+                                : bakeRelaxedConeMap(field, wrap, control);
+    if (!cones)
+        return cones;
+    applyNeighbourhoodMinimum(*cones, wrap);
     return cones;
+}
+
+ConeMap bakeConeMap(const HeightField& field, WrapMode wrap, ConeKind kind) {
+    Result<ConeMap> cones = bakeConeMap(field, wrap, kind, BakeControl{});
+    return cones ? std::move(*cones) : ConeMap(kind, 0, 0);
 }
 
 } // namespace px

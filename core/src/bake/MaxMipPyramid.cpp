@@ -42,7 +42,8 @@ MaxMipPyramid MaxMipPyramid::build(const HeightField& field, WrapMode wrap) {
                         const int cx = 2 * x + dx;
                         const int cy = 2 * y + dy;
                         if (cx < child.width && cy < child.height)
-                            m = std::max(m, child.values[static_cast<std::size_t>(cy) * child.width + cx]);
+                            m = std::max(
+                                m, child.values[static_cast<std::size_t>(cy) * child.width + cx]);
                     }
                 }
                 parent.values[static_cast<std::size_t>(y) * parent.width + x] = m;

@@ -1,6 +1,7 @@
 // The max-mip pyramid bounds every cell of the bilinear surface, at every level and size.
 
 #include "parallax/bake/MaxMipPyramid.h"
+
 #include "parallax/sample/ProceduralMaps.h"
 
 #include <QtTest>
@@ -31,8 +32,8 @@ void MaxMipPyramidTest::levelsRoundUp() {
     const MaxMipPyramid clamp = MaxMipPyramid::build(field, WrapMode::Clamp);
     QCOMPARE(clamp.width(0), 24);
     QCOMPARE(clamp.height(0), 6);
-    const MaxMipPyramid single = MaxMipPyramid::build(makeProceduralMap(ProceduralMap::Random, 1, 1),
-                                                      WrapMode::Repeat);
+    const MaxMipPyramid single =
+        MaxMipPyramid::build(makeProceduralMap(ProceduralMap::Random, 1, 1), WrapMode::Repeat);
     QCOMPARE(single.levels(), 1);
 }
 

@@ -1,7 +1,9 @@
 #pragma once
-// Brute-force cone bakers: simple, slow (O(N^2) per texel with an early stop) and conservative.
-// They are the oracles the fast bakers are tested against and what the techniques use until a
-// fast baker is wired in.
+// Brute-force cone bakers: every cell of the bilinear surface, ring by ring around the apex until
+// no farther cell can narrow the cone (O(N^4) at worst). They are the oracles the fast bakers are
+// tested against and the baseline of the benchmarks. Each cell's bound is as tight as the
+// definition allows: exact for the cells around the apex, and within a relative 1e-4 of the
+// exact minimum (from below) elsewhere. Not post-processed or quantised.
 
 #include "parallax/bake/ConeMap.h"
 #include "parallax/heightfield/HeightField.h"
@@ -10,17 +12,16 @@
 namespace px {
 
 // Conservative for the bilinear surface (CONVENTIONS §4): for every texel b and every point q of
-// the surface, |q - b| >= c(b) (h(q) - h_b). A far cell is bounded by the max of its corners at
-// its nearest point; a cell with b as a corner by its steepest slope (the mean value theorem along
-// the segment from b, which stays in the cell). Not yet post-processed or quantised.
+// the surface, |q - b| >= c(b) (h(q) - h_b).
 ConeMap bakeConservativeConesBruteForce(const HeightField& field, WrapMode wrap);
 
-// Relaxed cones (Bán et al. 2024, CONE_TYPE 4): only cells that fall away from the apex limit the
-// cone, at their nearest corner. Not yet post-processed or quantised.
+// Relaxed, safe for the bilinear surface: for every point q where the surface falls away from
+// b (grad h . (q - b) < 0), |q - b| >= c(b) (h(q) - h_b). The fast relaxed baker equals it.
 ConeMap bakeRelaxedConesBruteForce(const HeightField& field, WrapMode wrap);
 
 // Replaces each cone by the minimum over its 3x3 neighbourhood (wrap or clamp), which makes the
 // bilinearly interpolated cone anywhere in a cell no wider than any of its corners' cones.
+// In place, with memory for a few rows only.
 void applyNeighbourhoodMinimum(ConeMap& cones, WrapMode wrap);
 
 // Rounds each stored sqrt(ratio) down to `levels` steps (255 or 65535): never widens a cone.

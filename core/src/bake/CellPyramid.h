@@ -1,0 +1,49 @@
+#pragma once
+// A maximum pyramid over the cells of CellGrid (not MaxMipPyramid, whose clamp layout adds the
+// border strips): level 0 holds each cell's corner maximum, level L+1 the maximum of up to four
+// children, sizes rounded up.
+
+#include "bake/ConeCells.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace px::cone {
+
+class CellPyramid {
+public:
+    explicit CellPyramid(const CellGrid& grid);
+
+    int levels() const { return static_cast<int>(m_levels.size()); }
+    int width(int level) const { return m_levels[level].width; }
+    int height(int level) const { return m_levels[level].height; }
+    float at(int level, int x, int y) const {
+        const Level& l = m_levels[level];
+        return l.values[static_cast<std::size_t>(y) * l.width + x];
+    }
+
+private:
+    struct Level {
+        int width = 0, height = 0;
+        std::vector<float> values;
+    };
+    std::vector<Level> m_levels;
+};
+
+// Floor division and the cell range of extended node e at a level with `nodes` nodes over
+// `cells` cells per period: node e mod nodes, shifted by whole periods (CONE_MAPS.md §2 "wrap").
+inline int floorDiv(int a, int b) {
+    return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+struct CellRange {
+    int first, last;
+};
+
+inline CellRange nodeCells(int e, int level, int nodes, int cells) {
+    const int period = floorDiv(e, nodes);
+    const int a = e - period * nodes;
+    return {period * cells + (a << level), period * cells + std::min((a + 1) << level, cells) - 1};
+}
+
+} // namespace px::cone
