@@ -17,6 +17,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QStatusBar>
 #include <QUndoView>
 #include <QVBoxLayout>
@@ -36,6 +37,9 @@ QScrollArea* scrolled(QWidget* content) {
     area->setWidgetResizable(true);
     area->setFrameShape(QFrame::NoFrame);
     area->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // Never narrower than the panel: nothing is cut off on the right, at any scale factor.
+    area->setMinimumWidth(content->sizeHint().width() +
+                          area->verticalScrollBar()->sizeHint().width());
     return area;
 }
 
@@ -139,6 +143,13 @@ void MainWindow::createPanels(const QString& liveReason) {
     });
     connect(m_materialPanel, &MaterialPanel::note, this,
             [this](const QString& message) { statusBar()->showMessage(message, 8000); });
+    connect(m_materialPanel, &MaterialPanel::conesInvalidated, this,
+            [this](bool cone, bool relaxed) {
+                if (cone)
+                    startBake(BakeKind::Cone);
+                if (relaxed)
+                    startBake(BakeKind::RelaxedCone);
+            });
     connect(m_mapsPanel, &MapsPanel::loadRequested, this, &MainWindow::importMapDialog);
     connect(m_mapsPanel, &MapsPanel::fileDropped, this,
             [this](MapKind kind, const QString& path) { loadMap(kind, path); });

@@ -112,9 +112,27 @@ MaterialPanel::MaterialPanel(MaterialDocument* document, QWidget* parent)
                          [on](DocumentState& s) { s.material.selfShadow = on; });
     });
     connect(m_wrap, &QComboBox::currentIndexChanged, this, [this](int i) {
-        m_document->edit(tr("Wrap"), [i](DocumentState& s) {
+        // Cones are baked for one wrap mode (what lies across the edge): they go with it, and
+        // the window bakes them again for the new one.
+        const DocumentState& now = m_document->state();
+        const bool cone = now.hasMap(MapKind::Cone), relaxed = now.hasMap(MapKind::RelaxedCone);
+        m_document->edit(tr("Wrap"), [=](DocumentState& s) {
             s.material.wrap = i == 0 ? WrapMode::Repeat : WrapMode::Clamp;
+            if (cone || relaxed) {
+                auto assets = std::make_shared<MaterialAssets>(*s.assets);
+                assets->cone = {};
+                assets->relaxedCone = {};
+                s.assets = std::move(assets);
+                for (MapKind kind : {MapKind::Cone, MapKind::RelaxedCone}) {
+                    mapPath(s.material.maps, kind).clear();
+                    s.setUnsaved(kind, false);
+                }
+            }
         });
+        if (cone || relaxed) {
+            emit note(tr("The cone maps are baked again for the new wrap mode."));
+            emit conesInvalidated(cone, relaxed);
+        }
     });
     connect(m_normalSource, &QComboBox::currentIndexChanged, this, [this](int i) {
         const auto source = parseNormalSource(normalSourceNames()[static_cast<std::size_t>(i)]);

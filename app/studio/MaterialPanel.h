@@ -26,6 +26,8 @@ public:
 signals:
     void problem(const QString& message); // a file could not be read again
     void note(const QString& message);    // something the status bar should say
+    // The wrap mode changed: the cone maps that were there are gone and want baking again.
+    void conesInvalidated(bool cone, bool relaxed);
 
 private:
     void refresh();

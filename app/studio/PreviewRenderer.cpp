@@ -100,6 +100,9 @@ Result<double> PreviewRenderer::draw(const PreviewScene& scene, QSize pixels, un
         if (!s)
             return s.error();
     }
+    // QPainter draws the overlays next, on the depth the mesh left: hand it a neutral state.
+    f->glDisable(GL_DEPTH_TEST);
+    f->glDisable(GL_CULL_FACE);
     f->glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();

@@ -23,6 +23,7 @@ DocumentState makeSampleState(ProceduralMap kind, int size) {
     m.params = info(Technique::Pom).defaults;
     m.normalSource = NormalSource::HeightSobel;
     m.tiling = 2.0f;
+    m.selfShadow = true; // what parallax is for: bumps that cast shadows
     if (kind == ProceduralMap::Rivets) {
         m.specular = 0.6f;
         m.shininess = 64.0f;

@@ -5,8 +5,8 @@ namespace px::studio {
 OrbitCamera defaultCamera() {
     OrbitCamera camera;
     camera.azimuthDeg = 20.0f;
-    camera.elevationDeg = 38.0f;
-    camera.distance = 2.6f;
+    camera.elevationDeg = 32.0f;
+    camera.distance = 2.1f;
     return camera;
 }
 

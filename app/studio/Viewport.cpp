@@ -99,11 +99,11 @@ Viewport::Viewport(int index, MaterialDocument* document, const QString& liveRea
 
 void Viewport::setActive(bool active) {
     m_active = active;
-    setFrameShadow(active ? QFrame::Plain : QFrame::Sunken);
-    QPalette p = palette();
-    p.setColor(QPalette::WindowText,
-               active ? palette().color(QPalette::Highlight) : palette().color(QPalette::Mid));
-    setPalette(p);
+    // The frame alone (by its name), so the labels inside keep their colours.
+    setStyleSheet(
+        active ? QStringLiteral("QFrame#%1 { border: 2px solid palette(highlight); }")
+                     .arg(objectName())
+               : QStringLiteral("QFrame#%1 { border: 2px solid transparent; }").arg(objectName()));
     QFont f = m_title->font();
     f.setBold(active);
     m_title->setFont(f);

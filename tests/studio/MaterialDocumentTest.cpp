@@ -62,7 +62,8 @@ private slots:
             s.setView(2, {Technique::Steep, info(Technique::Steep).defaults});
         });
         QVERIFY(!doc.isDirty());
-        doc.edit("Shadow", [](DocumentState& s) { s.material.selfShadow = true; });
+        doc.edit("Shadow",
+                 [](DocumentState& s) { s.material.selfShadow = !s.material.selfShadow; });
         QVERIFY(doc.isDirty());
         QCOMPARE(dirty.count(), 1);
         doc.undoStack()->undo();

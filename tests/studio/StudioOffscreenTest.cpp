@@ -1,0 +1,226 @@
+// The editor's parts that need no OpenGL, on Qt's offscreen platform: the placeholder in place of
+// the live preview, the "no OpenGL 4.3" message, the Compare panel (bench in the background,
+// progress, cancel, a click on the plot applies a setting), the command line, export, saving.
+
+#include "Baking.h"
+#include "ComparePanel.h"
+#include "ExportDialog.h"
+#include "MaterialPanel.h"
+#include "RecentFiles.h"
+#include "SampleMaterial.h"
+#include "SliderField.h"
+#include "StudioOptions.h"
+#include "StudioTestSupport.h"
+#include "TechniquePanel.h"
+#include "WorkPrecisionView.h"
+#include "parallax/material/MaterialFile.h"
+
+#include <QComboBox>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+
+using namespace px;
+using namespace px::studio;
+using namespace px::studio::test;
+
+class StudioOffscreenTest : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase() { isolateSettings(m_dir); }
+
+    void placeholderWhereThereIsNoGl() {
+        const GlProbe& gl = probeOpenGl();
+        QVERIFY(gl.offscreenPlatform);
+        QVERIFY(!gl.usable);
+        MainWindow w(gl.reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Stones, 32);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.viewports()->viewport(0)->preview() == nullptr);
+        QVERIFY(w.viewports()->viewport(0)->statsText().contains("pom"));
+    }
+
+    void noGlMessageNamesBothVersions() {
+        GlProbe probe;
+        probe.major = 3;
+        probe.minor = 3;
+        probe.renderer = "softpipe";
+        const QString text = glUnavailableMessage(probe);
+        QVERIFY2(text.contains("4.3") && text.contains("3.3") && text.contains("softpipe"),
+                 qPrintable(text));
+        QVERIFY(glUnavailableMessage(GlProbe{}).contains("no OpenGL"));
+    }
+
+    void compareRunsInTheBackgroundAndAClickAppliesAPoint() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Bricks, 32);
+        w.viewports()->setLayoutCount(2);
+        w.viewports()->setActiveViewport(1);
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        ComparePanel* compare = w.comparePanel();
+        compare->parentWidget()->show();
+        compare->raysField()->setValue(8);
+        QSignalSpy finished(compare, &ComparePanel::finished);
+        QTest::mouseClick(compare->runButton(), Qt::LeftButton);
+        QVERIFY(compare->isRunning()); // returned at once: the bench runs on a worker
+        QVERIFY(compare->cancelButton()->isEnabled());
+        QVERIFY(finished.wait(120000));
+        QVERIFY(compare->chart().has_value());
+        WorkPrecisionView* view = compare->chartView();
+        QVERIFY(view->hasPanel());
+        view->resize(700, 400);
+
+        // Click relief's most expensive setting: viewport 2 takes it.
+        const WorkPrecisionPanel& panel = view->panel();
+        std::optional<PointRef> relief;
+        for (std::size_t s = 0; s < panel.series.size(); ++s) {
+            if (panel.series[s].technique == Technique::Relief)
+                relief = PointRef{s, panel.series[s].points.size() - 1};
+        }
+        QVERIFY(relief);
+        const WorkPrecisionPoint point = panel.at(*relief);
+        QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier,
+                          view->pointPosition(*relief).toPoint());
+        const ViewQuality q = w.document()->state().view(1);
+        QCOMPARE(q.technique, Technique::Relief);
+        QCOMPARE(q.params.maxLayers, point.setting.params.maxLayers);
+        QCOMPARE(q.params.minLayers, point.setting.params.minLayers);
+        QCOMPARE(w.techniquePanel()->viewport(), 1);
+        QCOMPARE(int(w.techniquePanel()->maxLayers()->value()), point.setting.params.maxLayers);
+        // One undo step, and the material (viewport 1) is untouched.
+        QCOMPARE(w.document()->material().technique, Technique::Pom);
+        w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->state().view(1).technique, Technique::Relief);
+        QVERIFY(w.document()->state().view(1).params.maxLayers != point.setting.params.maxLayers ||
+                point.setting.isDefault);
+    }
+
+    void compareCancels() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Bricks, 128);
+        ComparePanel* compare = w.comparePanel();
+        compare->raysField()->setValue(256);
+        QSignalSpy finished(compare, &ComparePanel::finished);
+        compare->run();
+        QVERIFY(compare->isRunning());
+        QTest::mouseClick(compare->cancelButton(), Qt::LeftButton);
+        QVERIFY(finished.wait(120000));
+        QVERIFY(!compare->chart().has_value());
+        QVERIFY(compare->runButton()->isEnabled());
+    }
+
+    void commandLine() {
+        Result<StudioOptions> o = parseStudioOptions(
+            {"--screenshot", "a.png", "--layout", "4", "--techniques", "pom,relief,cone,exact"});
+        QVERIFY(o);
+        QCOMPARE(o->screenshot, QString("a.png"));
+        QCOMPARE(o->layout, 4);
+        QCOMPARE(o->techniques.size(), std::size_t(4));
+        QCOMPARE(o->techniques[2], Technique::Cone);
+        o = parseStudioOptions({"wall.json"});
+        QVERIFY(o);
+        QCOMPARE(o->file, QString("wall.json"));
+        QCOMPARE(o->layout, 0);
+        QVERIFY(!parseStudioOptions({"--layout", "3"}));
+        QVERIFY(!parseStudioOptions({"--techniques", "pom,warp"}));
+        QVERIFY(!parseStudioOptions({"--layout", "1", "--techniques", "pom,relief"}));
+        QVERIFY(!parseStudioOptions({"--frobnicate"}));
+        QVERIFY(!parseStudioOptions({"--screenshot"}));
+        QVERIFY(!parseStudioOptions({"a.json", "b.json"}));
+    }
+
+    void saveThroughTheWindowAndExport() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Rivets, 32);
+        w.document()->edit("scale", [](DocumentState& s) { s.material.heightScale = 0.03f; });
+        QVERIFY(w.document()->isDirty());
+        QVERIFY(w.windowTitle().contains("rivets"));
+        const QString file = m_dir.filePath("rivets.json");
+        QVERIFY(w.saveTo(file));
+        QVERIFY(!w.document()->isDirty());
+        QVERIFY(!w.isWindowModified());
+        QVERIFY(w.windowTitle().contains("rivets.json"));
+        QCOMPARE(w.recentFiles()->files().front(), QFileInfo(file).absoluteFilePath());
+        QVERIFY(QFile::exists(m_dir.filePath("rivets_height.png")));
+
+        ExportDialog dialog(w.document()->material(), w.document()->filePath(), &w);
+        QSignalSpy done(&dialog, &ExportDialog::exportFinished);
+        dialog.startExport();
+        QVERIFY(done.wait(60000));
+        QVERIFY2(done.front().front().toBool(), qPrintable(dialog.resultText()));
+        QVERIFY(QFile::exists(m_dir.filePath("rivets-export/.parallax-export")));
+        // Again without "replace": refused, the folder is left as it was.
+        dialog.startExport();
+        QVERIFY(done.wait(60000));
+        QVERIFY(!done.back().front().toBool());
+
+        QVERIFY(w.openFile(file));
+        QCOMPARE(w.document()->material().heightScale, 0.03f);
+    }
+
+    void bakeOfAnOldSurfaceIsDiscarded() {
+        DocumentState state = makeSampleState(ProceduralMap::Bricks, 16);
+        BakeOutcome outcome;
+        outcome.request = makeBakeRequest(state, BakeKind::Cone);
+        outcome.cone = ConeMap(ConeKind::Conservative, 16, 16);
+        QVERIFY(withBake(state, outcome));
+        DocumentState changed = state;
+        auto assets = std::make_shared<MaterialAssets>(*state.assets);
+        assets->height.at(3, 3) = 0.123f;
+        changed.assets = assets;
+        QVERIFY(!withBake(changed, outcome));
+        changed = state;
+        changed.material.wrap = WrapMode::Clamp;
+        QVERIFY(!withBake(changed, outcome));
+    }
+
+    void wrapChangeBakesConesAgain() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Bricks, 32);
+        w.startBake(BakeKind::Cone);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.baker()->isBusy(), 60000);
+        QVERIFY(w.document()->state().hasMap(MapKind::Cone));
+        const int steps = w.document()->undoStack()->count();
+        QComboBox* wrap = w.materialPanel()->findChild<QComboBox*>();
+        QVERIFY(wrap);
+        // The first combo of the panel is the height channel; find the wrap one by its items.
+        for (QComboBox* c : w.materialPanel()->findChildren<QComboBox*>())
+            if (c->findText("clamp") >= 0)
+                wrap = c;
+        wrap->setFocus();
+        QTest::keyClicks(wrap, "clamp");
+        QVERIFY(w.document()->material().wrap == WrapMode::Clamp);
+        QVERIFY(!w.document()->state().hasMap(MapKind::Cone) || w.baker()->isBusy() ||
+                w.document()->undoStack()->count() > steps + 1);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.baker()->isBusy(), 60000);
+        QVERIFY(w.document()->state().hasMap(MapKind::Cone));
+        QCOMPARE(w.document()->undoStack()->count(), steps + 2); // the wrap, the bake
+    }
+
+    void recentFilesNewestFirst() {
+        RecentFiles recent;
+        recent.clear();
+        for (int i = 0; i < 12; ++i)
+            recent.add(QStringLiteral("/tmp/m%1.json").arg(i));
+        QCOMPARE(recent.files().size(), RecentFiles::kMaxFiles);
+        QCOMPARE(recent.files().front(), QString("/tmp/m11.json"));
+        recent.add("/tmp/m5.json");
+        QCOMPARE(recent.files().front(), QString("/tmp/m5.json"));
+        QCOMPARE(recent.files().count("/tmp/m5.json"), 1);
+        RecentFiles again; // read back from the settings
+        QCOMPARE(again.files(), recent.files());
+    }
+};
+
+QTEST_MAIN(StudioOffscreenTest)
+#include "StudioOffscreenTest.moc"
