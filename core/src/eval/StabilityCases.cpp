@@ -119,7 +119,7 @@ constexpr std::array kRules{
               "its step cap runs out"},
     BoundRule{Technique::RelaxedCone,
               "p99 <= 1 texel for rays up to 0.6 tile long (the canonical scene up to 80 degrees); "
-              "none beyond, where its 24 steps run out"},
+              "none beyond, where its step cap runs out"},
     BoundRule{Technique::Pyramid, "every ray within 0.05 texel of exact"},
     BoundRule{Technique::Exact, "the reference: within 0.001 texel of the closed forms"},
 };
