@@ -43,6 +43,8 @@ void MainWindow::createActions() {
     m_actions->undo->setShortcut(QKeySequence::Undo);
     m_actions->redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     m_actions->redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    m_actions->undo->setStatusTip(tr("Undo the last edit; the History panel lists every step."));
+    m_actions->redo->setStatusTip(tr("Redo the edit just undone."));
 }
 
 void MainWindow::createMenus() {
@@ -76,6 +78,8 @@ void MainWindow::createMenus() {
     for (MapKind kind : kAllMapKinds) {
         QAction* a =
             importMap->addAction(QString::fromUtf8(mapTitle(kind).data()) + QStringLiteral("…"));
+        a->setStatusTip(tr("Load the %1 map from an image file.")
+                            .arg(QString::fromUtf8(mapTitle(kind).data()).toLower()));
         if (kind == MapKind::Height)
             a->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
         connect(a, &QAction::triggered, this, [this, kind] { importMapDialog(kind); });
@@ -155,7 +159,8 @@ void MainWindow::createMenus() {
     connect(reset, &QAction::triggered, m_viewports, &ViewportGrid::resetCameras);
     view->addActions({m_actions->link, m_actions->heatMap, m_actions->wipe, reset});
     view->addSeparator();
-    QAction* fullScreen = action(this, tr("&Full Screen"), QKeySequence::FullScreen, {});
+    QAction* fullScreen = action(this, tr("&Full Screen"), QKeySequence::FullScreen,
+                                 tr("The window over the whole screen, and back."));
     fullScreen->setCheckable(true);
     connect(fullScreen, &QAction::toggled, this,
             [this](bool on) { on ? showFullScreen() : showNormal(); });

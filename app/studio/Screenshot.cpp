@@ -57,7 +57,7 @@ void applyViewOptions(MainWindow& window, const StudioOptions& options) {
     }
 }
 
-QString takeScreenshot(MainWindow& window, const QString& file, int timeoutMs) {
+QString takeScreenshot(MainWindow& window, const QString& file, QSize* pixels, int timeoutMs) {
     const QDeadlineTimer deadline(timeoutMs);
     ViewportGrid* grid = window.viewports();
     auto settled = [&] {
@@ -86,6 +86,8 @@ QString takeScreenshot(MainWindow& window, const QString& file, int timeoutMs) {
     }
     if (!out.commit())
         return QObject::tr("%1: cannot write (%2)").arg(file, out.errorString());
+    if (pixels)
+        *pixels = image.size();
     return {};
 }
 

@@ -76,12 +76,14 @@ int runStudio(int argc, char** argv) {
         window.resize(options->windowSize);
         applyViewOptions(window, *options);
         window.show();
-        const QString error = takeScreenshot(window, options->screenshot);
+        QSize pixels;
+        const QString error = takeScreenshot(window, options->screenshot, &pixels);
         if (!error.isEmpty()) {
             std::fprintf(stderr, "error: %s\n", qPrintable(error));
             return 1;
         }
-        std::printf("wrote %s\n", qPrintable(options->screenshot));
+        std::printf("wrote %s (%dx%d pixels)\n", qPrintable(options->screenshot), pixels.width(),
+                    pixels.height());
         return 0;
     }
     if (options->layout != 0)

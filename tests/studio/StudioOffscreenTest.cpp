@@ -5,7 +5,11 @@
 #include "Baking.h"
 #include "ComparePanel.h"
 #include "ExportDialog.h"
+#include "GlUnavailableDialog.h"
+#include "MapRow.h"
+#include "MapsPanel.h"
 #include "MaterialPanel.h"
+#include "RangeSlider.h"
 #include "RecentFiles.h"
 #include "SampleMaterial.h"
 #include "SliderField.h"
@@ -15,10 +19,18 @@
 #include "WorkPrecisionView.h"
 #include "parallax/material/MaterialFile.h"
 
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
 #include <QComboBox>
+#include <QMenu>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QSpinBox>
+#include <QTimer>
+#include <QToolButton>
 
 using namespace px;
 using namespace px::studio;
@@ -205,6 +217,112 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!w.baker()->isBusy(), 60000);
         QVERIFY(w.document()->state().hasMap(MapKind::Cone));
         QCOMPARE(w.document()->undoStack()->count(), steps + 2); // the wrap, the bake
+    }
+
+    void noGlDialogOffersSoftwareOrGoingOn() {
+        GlProbe probe;
+        probe.major = 3;
+        probe.minor = 1;
+        qunsetenv("LIBGL_ALWAYS_SOFTWARE");
+        QStringList buttons;
+        // Answer the dialog the way a user would: read it, then pick "Continue Without Preview".
+        QTimer::singleShot(0, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box)
+                return;
+            for (QAbstractButton* b : box->buttons())
+                buttons << b->text();
+            for (QAbstractButton* b : box->buttons())
+                if (b->text().contains("Continue"))
+                    b->click();
+        });
+        QCOMPARE(askAboutMissingGl(probe), GlChoice::ContinueWithoutPreview);
+        QVERIFY(buttons.join(",").contains("Software Rendering"));
+        QVERIFY(buttons.join(",").contains("Quit"));
+    }
+
+    void shortcutsSwitchLayoutAndViewport() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Bricks, 16);
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::Key_4));
+        QCOMPARE(w.viewports()->layoutCount(), 4);
+        QTest::keySequence(&w, QKeySequence(Qt::ALT | Qt::Key_3));
+        QCOMPARE(w.viewports()->activeViewport(), 2);
+        QCOMPARE(w.techniquePanel()->viewport(), 2);
+        QTest::keySequence(&w, QKeySequence(Qt::CTRL | Qt::Key_1));
+        QCOMPARE(w.viewports()->layoutCount(), 1);
+        QCOMPARE(w.viewports()->activeViewport(), 0);
+        QTest::keySequence(&w, QKeySequence(Qt::Key_L));
+        QVERIFY(!w.viewports()->linked());
+    }
+
+    void everyControlExplainsItself() {
+        MainWindow w(probeOpenGl().reason);
+        for (SliderField* f : w.findChildren<SliderField*>()) {
+            QVERIFY2(!f->slider()->toolTip().isEmpty(), qPrintable(f->objectName()));
+            QVERIFY(!f->slider()->statusTip().isEmpty());
+        }
+        for (QAction* a : w.findChildren<QAction*>()) {
+            if (!a->shortcut().isEmpty() && !a->text().isEmpty() && a->menu() == nullptr)
+                QVERIFY2(!a->statusTip().isEmpty(), qPrintable(a->text()));
+        }
+    }
+
+    void qualityRangeSetsTheLayers() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Bricks, 16);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        RangeSlider* range = w.techniquePanel()->qualityRange();
+        QCOMPARE(range->low(), 8 / 50.0);
+        QCOMPARE(range->high(), 32 / 50.0);
+        range->setFocus();
+        QTest::keyClick(range, Qt::Key_Right);                    // low + 0.02: 9 layers
+        QTest::keyClick(range, Qt::Key_Right, Qt::ShiftModifier); // high + 0.02: 33 layers
+        QCOMPARE(w.document()->material().params.minLayers, 9);
+        QCOMPARE(w.document()->material().params.maxLayers, 33);
+        QCOMPARE(int(w.techniquePanel()->minLayers()->value()), 9);
+        QCOMPARE(layersForQuality(0.5), 25);
+        QCOMPARE(layersForQuality(0.0), 1);
+    }
+
+    void bakedNormalMapBecomesTheNormalSource() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Rivets, 32);
+        QTest::mouseClick(w.mapsPanel()->row(MapKind::Normal)->bakeButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.baker()->isBusy(), 60000);
+        const DocumentState& s = w.document()->state();
+        QVERIFY(s.hasMap(MapKind::Normal));
+        QVERIFY(s.material.normalSource == NormalSource::Map);
+        QCOMPARE(s.assets->normal.width, 32);
+        QVERIFY(w.mapsPanel()->row(MapKind::Normal)->sourceText().contains("not saved"));
+    }
+
+    void closingAsksBeforeLosingChanges() {
+        MainWindow w(probeOpenGl().reason);
+        w.newSample(ProceduralMap::Bricks, 16);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.document()->edit("tiling", [](DocumentState& s) { s.material.tiling = 5.0f; });
+        QString asked;
+        QTimer::singleShot(0, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box)
+                return;
+            asked = box->text();
+            box->button(QMessageBox::Cancel)->click();
+        });
+        QVERIFY(!w.close()); // cancelled: the window stays
+        QVERIFY(asked.contains("not saved"));
+        QVERIFY(w.isVisible());
+        w.document()->undoStack()->undo();
+        QVERIFY(w.close()); // nothing to lose: no question
     }
 
     void recentFilesNewestFirst() {

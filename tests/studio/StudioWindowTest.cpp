@@ -9,11 +9,13 @@
 #include "StudioTestSupport.h"
 #include "TechniqueCombo.h"
 #include "TechniquePanel.h"
+#include "ViewPanel.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
@@ -303,6 +305,27 @@ private slots:
         QVERIFY(v->wipeCombo()->isVisible());
         QVERIFY(waitForFigures(preview));
         QVERIFY2(preview->renderError().isEmpty(), qPrintable(preview->renderError()));
+    }
+
+    void everyMeshDraws() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        QImage last = preview->grabFramebuffer();
+        QComboBox* mesh = w->viewPanel()->mesh();
+        mesh->setFocus();
+        for (const char* name : {"cube", "sphere", "cylinder"}) {
+            QTest::keyClick(mesh, Qt::Key_Down); // the next mesh in the list
+            QCOMPARE(mesh->currentText(), QString(name));
+            QVERIFY(preview->scene().view.mesh == parseMeshKind(name));
+            QVERIFY(waitForFigures(preview));
+            QVERIFY2(preview->renderError().isEmpty(), qPrintable(preview->renderError()));
+            QVERIFY(preview->stats().pixels > 0);
+            const QImage now = preview->grabFramebuffer();
+            QVERIFY(changedPixels(last, now) > now.width() * now.height() / 20);
+            last = now;
+        }
     }
 
     void ctrlDragMovesTheLightOfLinkedViews() {
