@@ -35,6 +35,7 @@ int run(int argc, char** argv) {
     add(addExportCommand);
     add(addBenchCommand);
     add(addStabilityCommand);
+    add(addBakeCommand);
 
     try {
         app.parse(argc, argv);

@@ -1,0 +1,296 @@
+// parallax-cli bake normal|cone|relaxed-cone|pyramid: the bakers of core/bake as files.
+//
+// Every bake is checked before it starts (options, output type, output folder), shows progress
+// on stderr once it has run for a second, stops cleanly on Ctrl-C, and writes atomically: a
+// failed or interrupted bake leaves any previous output untouched and no partial file.
+
+#include "Cli.h"
+#include "CommonOptions.h"
+#include "parallax/bake/BakeEncoding.h"
+#include "parallax/bake/ConeMapBaker.h"
+#include "parallax/bake/MaxMipPyramid.h"
+#include "parallax/bake/NormalMapBaker.h"
+#include "parallax/image/ImageFile.h"
+#include "parallax/material/MaterialNames.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <unistd.h>
+
+namespace px::cli {
+
+namespace {
+
+struct BakeOptions {
+    std::string kind;
+    HeightOptions height;
+    float scale = 0.05f;
+    std::string filter = "sobel";
+    std::string green = "opengl";
+    std::string normal;               // pass-through: a loaded normal map
+    std::string normalGreen = "auto"; // its convention
+    std::optional<int> bits;
+    std::string layout = "atlas";
+    int level = -1;
+    std::string out;
+};
+
+// Ctrl-C sets the flag the bakers poll; a lock-free atomic store is async-signal-safe.
+std::atomic<bool> gInterrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+extern "C" void onInterrupt(int) {
+    gInterrupted.store(true);
+}
+
+class InterruptGuard {
+public:
+    InterruptGuard() {
+        gInterrupted = false;
+        m_previous = std::signal(SIGINT, onInterrupt);
+    }
+    ~InterruptGuard() { std::signal(SIGINT, m_previous); }
+    InterruptGuard(const InterruptGuard&) = delete;
+    InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+private:
+    void (*m_previous)(int) = SIG_DFL;
+};
+
+// "baking relaxed-cone map: 42%" on stderr, once the bake has run for a second: one updating
+// line on a terminal, a line per 10% otherwise. PX_BAKE_TEST_INTERRUPT_AT=F (tests only) raises
+// SIGINT once the bake is F done, to exercise the real Ctrl-C path.
+class ProgressLine {
+public:
+    explicit ProgressLine(std::string what)
+        : m_what(std::move(what)), m_start(std::chrono::steady_clock::now()),
+          m_tty(isatty(STDERR_FILENO)) {
+        if (const char* at = std::getenv("PX_BAKE_TEST_INTERRUPT_AT"))
+            m_interruptAt = std::strtof(at, nullptr);
+    }
+    ~ProgressLine() {
+        if (m_shown && m_tty)
+            std::fputc('\n', stderr);
+    }
+
+    void operator()(float done) {
+        if (m_interruptAt >= 0.0f && done >= m_interruptAt) {
+            m_interruptAt = -1.0f;
+            std::raise(SIGINT);
+        }
+        const auto elapsed = std::chrono::steady_clock::now() - m_start;
+        if (elapsed < std::chrono::seconds(1))
+            return;
+        const int percent = static_cast<int>(done * 100.0f);
+        if (m_tty) {
+            if (percent != m_last)
+                std::fprintf(stderr, "\r%s: %3d%%", m_what.c_str(), percent);
+        } else if (percent / 10 != m_last / 10 || !m_shown) {
+            std::fprintf(stderr, "%s: %d%%\n", m_what.c_str(), percent);
+        }
+        m_last = percent;
+        m_shown = true;
+    }
+
+private:
+    std::string m_what;
+    std::chrono::steady_clock::time_point m_start;
+    bool m_tty;
+    bool m_shown = false;
+    int m_last = -1;
+    float m_interruptAt = -1.0f;
+};
+
+std::string lowerExtension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+// The pixel format from --bits and the extension, checked before any work is done.
+Result<PixelFormat> outputFormat(const BakeOptions& o) {
+    const std::string ext = lowerExtension(o.out);
+    if (ext != ".png" && ext != ".tif" && ext != ".tiff" && ext != ".exr")
+        return fileError(o.out, "unknown output type '" + ext + "': use .png, .tif or .exr");
+    const int bits = o.bits.value_or(ext == ".exr" ? 32 : (o.kind == "normal" ? 8 : 16));
+    Result<PixelFormat> format = pixelFormatFromBits(bits);
+    if (!format)
+        return format;
+    if (!extensionSupports(o.out, *format))
+        return fileError(
+            o.out, ext == ".exr"
+                       ? "EXR stores float here: use --bits 32"
+                       : "PNG stores 8 or 16 bits: use --bits 8 or 16, or a .tif/.exr for 32");
+    const std::filesystem::path folder = std::filesystem::path(o.out).parent_path();
+    std::error_code ec;
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+        return fileError(o.out, "cannot create the file: the folder " + folder.string() +
+                                    " does not exist");
+    return format;
+}
+
+// Options that only one kind of bake reads are errors elsewhere: silently ignoring them would
+// hide a mistake (--scale on a cone map, say).
+Status checkApplicable(const BakeOptions& o, const CLI::App& cmd) {
+    struct Rule {
+        const char* option;
+        bool allowed;
+    };
+    const bool normal = o.kind == "normal", pyramid = o.kind == "pyramid";
+    for (const Rule& r :
+         {Rule{"--scale", normal}, Rule{"--filter", normal}, Rule{"--green", normal},
+          Rule{"--normal", normal}, Rule{"--normal-green", normal}, Rule{"--layout", pyramid},
+          Rule{"--level", pyramid}}) {
+        if (!r.allowed && cmd.count(r.option) > 0)
+            return Error{std::string(r.option) + " does not apply to bake " + o.kind};
+    }
+    if (o.normal.empty() && o.height.file.empty())
+        return Error{"bake " + o.kind + " needs --height FILE" +
+                     (normal ? " (or --normal FILE)" : "")};
+    if (!o.normal.empty() && cmd.count("--filter") + cmd.count("--scale") > 0)
+        return Error{"--filter and --scale apply to normals baked from --height, not to a loaded "
+                     "--normal map"};
+    if (!o.normal.empty() && o.normalGreen == "auto" && o.height.file.empty())
+        return Error{
+            "--normal-green auto tells the convention from the height map: give --height too, "
+            "or say --normal-green opengl|directx"};
+    return success();
+}
+
+Result<Image> bakeNormal(const BakeOptions& o, const BakeControl& control) {
+    const NormalGreen green = *parseNormalGreen(o.green);
+    if (!o.normal.empty()) {
+        Result<Image> loaded = readImage(o.normal);
+        if (!loaded)
+            return loaded.error();
+        NormalGreen from = NormalGreen::OpenGL;
+        if (o.normalGreen == "auto") {
+            Result<HeightField> field = o.height.load();
+            if (!field)
+                return field.error();
+            Result<NormalGreen> told =
+                detectNormalGreen(*loaded, *field, o.height.wrapMode(), o.normal);
+            if (!told)
+                return told.error();
+            from = *told;
+            std::fprintf(stderr, "%s: green is %s\n", o.normal.c_str(),
+                         std::string(toString(from)).c_str());
+        } else {
+            from = *parseNormalGreen(o.normalGreen);
+        }
+        return convertNormalMap(*loaded, from, green, o.normal);
+    }
+    Result<HeightField> field = o.height.load();
+    if (!field)
+        return field.error();
+    NormalBakeOptions options;
+    options.heightScale = o.scale;
+    options.filter = *parseNormalFilter(o.filter);
+    options.wrap = o.height.wrapMode();
+    options.green = green;
+    return bakeNormalMap(*field, options, control);
+}
+
+Result<Image> bakeCones(const BakeOptions& o, PixelFormat format, const BakeControl& control) {
+    Result<HeightField> source = o.height.load();
+    if (!source)
+        return source.error();
+    // Bake from the heights as the file will store them, so that R and G agree.
+    const HeightField field = roundHeightsUp(*source, format);
+    const ConeKind kind = o.kind == "cone" ? ConeKind::Conservative : ConeKind::Relaxed;
+    Result<ConeMap> cones = bakeConeMap(field, o.height.wrapMode(), kind, control);
+    if (!cones)
+        return cones.error();
+    return encodeConeMap(field, *cones, format);
+}
+
+Result<Image> bakePyramid(const BakeOptions& o, PixelFormat format) {
+    Result<HeightField> field = o.height.load();
+    if (!field)
+        return field.error();
+    const MaxMipPyramid pyramid = MaxMipPyramid::build(*field, o.height.wrapMode());
+    if (o.level >= pyramid.levels())
+        return Error{"--level " + std::to_string(o.level) +
+                     " does not exist: the pyramid has levels 0 to " +
+                     std::to_string(pyramid.top())};
+    const PyramidLayout layout = o.layout == "chain" ? PyramidLayout::Chain : PyramidLayout::Atlas;
+    return encodePyramid(pyramid, layout, o.level, format);
+}
+
+int runBake(const BakeOptions& o, const CLI::App& cmd) {
+    if (Status s = checkApplicable(o, cmd); !s)
+        return fail(s.error().message);
+    Result<PixelFormat> format = outputFormat(o);
+    if (!format)
+        return fail(format.error().message);
+
+    InterruptGuard guard;
+    Result<Image> image = Error{""};
+    {
+        ProgressLine line("baking " + o.kind + (o.kind == "pyramid" ? "" : " map"));
+        BakeControl control;
+        control.progress = [&line](float done) { line(done); };
+        control.cancel = &gInterrupted;
+        if (o.kind == "normal")
+            image = bakeNormal(o, control);
+        else if (o.kind == "pyramid")
+            image = bakePyramid(o, *format);
+        else
+            image = bakeCones(o, *format, control);
+    }
+    if ((!image && isCancelled(image.error())) || gInterrupted) {
+        fail("interrupted: nothing was written");
+        return 130; // as shells report SIGINT
+    }
+    if (!image)
+        return fail(image.error().message);
+    ImageWriteOptions write;
+    write.format = *format;
+    if (Status s = writeImage(o.out, *image, write); !s)
+        return fail(s.error().message);
+    return 0;
+}
+
+} // namespace
+
+Action addBakeCommand(CLI::App& app) {
+    auto o = std::make_shared<BakeOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "bake", "Bake a normal, cone, relaxed cone or max-mip map from a height map");
+    cmd->add_option("kind", o->kind, "normal, cone, relaxed-cone or pyramid")
+        ->required()
+        ->check(CLI::IsMember({"normal", "cone", "relaxed-cone", "pyramid"}));
+    o->height.addTo(*cmd, false);
+    cmd->add_option("--scale", o->scale,
+                    "normal: height scale s in uv units (the material's height_scale)")
+        ->check(CLI::Range(0.0f, 100.0f));
+    std::vector<std::string> filters(normalFilterNames().begin(), normalFilterNames().end());
+    cmd->add_option("--filter", o->filter, "normal: derivative filter (default sobel)")
+        ->check(CLI::IsMember(filters));
+    cmd->add_option("--green", o->green, "normal: green of the output, opengl (Y+) or directx (Y-)")
+        ->check(CLI::IsMember({"opengl", "directx"}));
+    cmd->add_option("--normal", o->normal,
+                    "normal: pass a loaded normal map through instead of baking one");
+    cmd->add_option("--normal-green", o->normalGreen,
+                    "normal: green of the --normal map (auto: told from --height)")
+        ->check(CLI::IsMember({"auto", "opengl", "directx"}));
+    cmd->add_option("--bits", o->bits,
+                    "8, 16 or 32 (float); default 32 for .exr, else 8 (normal) or 16")
+        ->check(CLI::IsMember({8, 16, 32}));
+    cmd->add_option("--layout", o->layout,
+                    "pyramid: atlas (every level stacked, for the GPU) or chain (for looking at)")
+        ->check(CLI::IsMember({"atlas", "chain"}));
+    cmd->add_option("--level", o->level, "pyramid: write one level only")->check(CLI::Range(0, 64));
+    cmd->add_option("--out", o->out, "Output image: .png, .tif or .exr (format from the extension)")
+        ->required();
+    return [o, cmd] { return runBake(*o, *cmd); };
+}
+
+} // namespace px::cli
