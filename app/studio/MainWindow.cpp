@@ -18,6 +18,7 @@
 #include <QMessageBox>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QSettings>
 #include <QStatusBar>
 #include <QUndoView>
 #include <QVBoxLayout>
@@ -214,10 +215,25 @@ void MainWindow::onBakeFinished(const BakeOutcome& outcome) {
                              8000);
 }
 
+void MainWindow::restoreLayout() {
+    const QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    const int count = settings.value(QStringLiteral("window/viewports"), 1).toInt();
+    m_viewports->setLayoutCount(count);
+    m_layoutRestored = true;
+}
+
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (!maybeSave()) {
         event->ignore();
         return;
+    }
+    if (m_layoutRestored) {
+        QSettings settings;
+        settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+        settings.setValue(QStringLiteral("window/state"), saveState());
+        settings.setValue(QStringLiteral("window/viewports"), m_viewports->layoutCount());
     }
     m_baker->cancel();
     event->accept();

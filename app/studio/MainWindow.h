@@ -55,6 +55,10 @@ public:
     bool importFiles(const QStringList& paths); // what a drop does
     void startBake(BakeKind kind);
 
+    // The window's size, docks and layout as the user left them (settings), restored at start-up
+    // of an interactive session (not for screenshots and tests, which want a known layout).
+    void restoreLayout();
+
     // The last problem shown to the user (tests read it; the message box shows it).
     QString lastProblem() const { return m_lastProblem; }
     // False: problems go to lastProblem() and the status bar only (tests, --screenshot).
@@ -101,6 +105,7 @@ private:
     QMenu* m_panelsMenu = nullptr;
     QString m_lastProblem;
     bool m_interactive = true;
+    bool m_layoutRestored = false; // save it on close only if it was restored
 
     struct Actions;
     std::unique_ptr<Actions> m_actions;

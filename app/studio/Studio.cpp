@@ -86,6 +86,7 @@ int runStudio(int argc, char** argv) {
                     pixels.height());
         return 0;
     }
+    window.restoreLayout();
     if (options->layout != 0)
         applyViewOptions(window, *options);
     window.show();
