@@ -2,6 +2,7 @@
 
 #include "Cli.h"
 #include "CommonOptions.h"
+#include "GpuTracer.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/trace/TraceScene.h"
 
@@ -22,6 +23,7 @@ struct TraceOptions {
     std::string technique = "exact";
     std::optional<int> minLayers, maxLayers, binarySteps, secantSteps, maxSteps;
     std::string out;
+    bool gpu = false;
 };
 
 std::vector<std::string> techniqueNames() {
@@ -62,7 +64,15 @@ int runTrace(const TraceOptions& o) {
     if (!tracer)
         return fail(tracer.error().message);
 
-    const std::vector<TraceResult> results = traceScene(*tracer, scene);
+    std::vector<TraceResult> results;
+    if (o.gpu) {
+        Result<std::vector<TraceResult>> gpu = traceSceneHeadless(maps, technique, params, o.scale, scene);
+        if (!gpu)
+            return fail(gpu.error().message);
+        results = std::move(*gpu);
+    } else {
+        results = traceScene(*tracer, scene);
+    }
     const std::string csv = traceCsv(scene, results);
     if (o.out == "-") {
         std::cout << csv;
@@ -99,6 +109,7 @@ Action addTraceCommand(CLI::App& app) {
         ->check(CLI::Range(0, kMaxRefineLimit));
     cmd->add_option("--max-steps", o->maxSteps, "Cap on cone steps, cells or pyramid nodes")
         ->check(CLI::Range(1, kMaxStepsLimit));
+    cmd->add_flag("--gpu", o->gpu, "Trace on the GPU (headless OpenGL 4.3, the same kernels): same CSV");
     cmd->add_option("--out", o->out, "Output CSV (i,j,u,v,t,fetches); - for standard output")
         ->required();
     return [o] { return runTrace(*o); };

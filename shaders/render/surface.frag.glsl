@@ -1,7 +1,8 @@
 // Shading a mesh with the variant's technique. The frame T = dP/du, B = dP/dv, N (CONVENTIONS §2)
 // comes from the vertex data or from screen-space derivatives; the view ray is taken into the
 // tangent space (uv, uv, depth in uv units) to get P = s d.xy / (-d.z); the shared kernel finds the
-// hit; normal, material and light are then read at the hit.
+// hit; normal, material and light are then read at the hit. The generator defines
+// PX_HAS_TANGENT_FRAME and PX_HAS_TEXTURE_COORDINATES when the variant needs them.
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -17,9 +18,14 @@ vec3 pxSafeNormalize(vec3 v, vec3 fallback) {
 }
 
 void main() {
+#if defined(PX_HAS_SURFACE_OUTPUT) && !defined(PX_HAS_PARALLAX)
+    pxFragColor = vec4(vUv, 0.0, 0.0); // nothing is traced: the hit is the surface point
+#else
     vec3 N = pxSafeNormalize(vNormal, vec3(0.0, 0.0, 1.0));
     if (!gl_FrontFacing)
         N = -N;
+    vec3 toCamera = pxCameraPos - vPosition;
+#if defined(PX_HAS_TANGENT_FRAME)
 #if defined(PX_HAS_DERIVATIVE_TBN)
     // The frame from screen-space derivatives, for meshes without tangents: solve
     // [dp/dx dp/dy] = [T B] [duv/dx duv/dy] for T and B, then project them onto the tangent plane
@@ -38,6 +44,10 @@ void main() {
     vec3 T = vTangent;
     vec3 B = vBitangent;
 #endif
+    // World units per uv unit: the depth s (uv units) becomes s * Lw in the world.
+    float Lw = sqrt(max(length(T) * length(B), 1.0e-20));
+#endif
+#if defined(PX_HAS_TEXTURE_COORDINATES)
     // Derivatives of the un-offset uv, taken before any loop or discard (TECHNIQUES.md pitfalls):
     // every texture read at the hit uses them, so the hit's discontinuities pick no wrong mip.
     vec2 uvDx = dFdx(vUv);
@@ -45,10 +55,8 @@ void main() {
     // Far from the origin float uv loses the texel: trace within the tile, keep the tile apart.
     vec2 tile = floor(vUv);
     vec2 uv = vUv - tile;
-    vec3 toCamera = pxCameraPos - vPosition;
-    // World units per uv unit: the depth s (uv units) becomes s * Lw in the world.
-    float Lw = sqrt(max(length(T) * length(B), 1.0e-20));
-
+    vec2 hit = uv;
+#endif
 #if defined(PX_HAS_HEIGHT_MAP)
     // The height level the pixel's footprint asks for, chosen before any loop.
     int footprintLevel = clamp(int(floor(textureQueryLod(pxHeightMap, vUv).x)), 0,
@@ -56,7 +64,6 @@ void main() {
 #endif
 
     float t = 0.0;
-    vec2 hit = uv;
     float lightVisible = 1.0;
 #if defined(PX_HAS_PARALLAX)
     mat3 toTangent = inverse(mat3(T, B, N * Lw));
@@ -136,5 +143,6 @@ void main() {
     vec3 color = pxBlinnPhong(n, v, pxLightDir, albedo, occlusion, lightVisible);
 #endif
     pxFragColor = vec4(pxLinearToSrgb(color), 1.0);
+#endif
 #endif
 }

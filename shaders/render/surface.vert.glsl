@@ -14,15 +14,25 @@ out vec2 vUv;
 out vec3 vTangent;
 out vec3 vBitangent;
 
+// The generator defines PX_FRAGMENT_READS_<INPUT> for each input the fragment stage keeps: an
+// output nobody reads is not written, so nothing it alone needs is declared.
 void main() {
     vec4 world = pxModel * vec4(aPosition, 1.0);
+#if defined(PX_FRAGMENT_READS_VPOSITION)
     vPosition = world.xyz;
+#endif
+#if defined(PX_FRAGMENT_READS_VNORMAL)
     vNormal = pxNormalMatrix * aNormal;
+#endif
+#if defined(PX_FRAGMENT_READS_VUV)
     vUv = aUv * pxTiling;
-#if !defined(PX_HAS_DERIVATIVE_TBN)
+#endif
     // Tangents follow the surface (the model matrix, not the normal matrix); tiling packs more uv
     // into the same length.
+#if defined(PX_FRAGMENT_READS_VTANGENT)
     vTangent = mat3(pxModel) * aTangent / pxTiling.x;
+#endif
+#if defined(PX_FRAGMENT_READS_VBITANGENT)
     vBitangent = mat3(pxModel) * aBitangent / pxTiling.y;
 #endif
     gl_Position = pxViewProjection * world;

@@ -11,6 +11,13 @@
 
 #define PX_BIG 1.0e30f
 
+// Marks values whose every operation both compilers must evaluate as written: GLSL compilers may
+// otherwise reassociate or fuse them (Mesa does), and the CPU and GPU would part ways in the last
+// bits, which iterated refinements amplify. The shader generator defines it as `precise`.
+#ifndef PX_PRECISE
+#define PX_PRECISE
+#endif
+
 // floor(a / b) for b > 0, well defined for negative a (GLSL leaves % and / on negatives open).
 int pxFloorDiv(int a, int b) {
     return a >= 0 ? a / b : -((-a - 1) / b) - 1;
@@ -31,6 +38,18 @@ vec2 pxCellCoords(vec2 uv) {
     return vec2(uv.x * float(pxMapSize.x) - 0.5f, uv.y * float(pxMapSize.y) - 0.5f);
 }
 
+// mix() written out: x (1 - a) + y a, as GLM evaluates it. GLSL compilers lower mix() as they
+// see fit (Mesa sometimes to x + a (y - x)), which differs in the last bit.
+float pxLerp(float x, float y, float a) {
+    PX_PRECISE float r = x * (1.0f - a) + y * a;
+    return r;
+}
+
+vec2 pxLerp2(vec2 x, vec2 y, float a) {
+    PX_PRECISE vec2 r = x * (1.0f - a) + y * a;
+    return r;
+}
+
 // One bilinear sample of the height map: one fetch.
 float pxHeight(vec2 uv) {
     pxFetches += 1;
@@ -42,7 +61,7 @@ float pxHeight(vec2 uv) {
     float h10 = pxHeightTexel(pxWrapTexel(ivec2(i.x + 1, i.y)));
     float h01 = pxHeightTexel(pxWrapTexel(ivec2(i.x, i.y + 1)));
     float h11 = pxHeightTexel(pxWrapTexel(ivec2(i.x + 1, i.y + 1)));
-    return mix(mix(h00, h10, f.x), mix(h01, h11, f.x), f.y);
+    return pxLerp(pxLerp(h00, h10, f.x), pxLerp(h01, h11, f.x), f.y);
 }
 
 // One bilinear sample of the cone map: (height, cone ratio). G holds sqrt(ratio) (CONVENTIONS §4),
@@ -57,7 +76,7 @@ vec2 pxConeSample(vec2 uv) {
     vec2 b = pxConeTexel(pxWrapTexel(ivec2(i.x + 1, i.y)));
     vec2 d = pxConeTexel(pxWrapTexel(ivec2(i.x, i.y + 1)));
     vec2 e = pxConeTexel(pxWrapTexel(ivec2(i.x + 1, i.y + 1)));
-    vec2 s = mix(mix(a, b, f.x), mix(d, e, f.x), f.y);
+    vec2 s = pxLerp2(pxLerp2(a, b, f.x), pxLerp2(d, e, f.x), f.y);
     return vec2(s.x, s.y * s.y);
 }
 
@@ -83,13 +102,14 @@ float pxCosTheta(vec2 P) {
 
 // The seeds' quality range: maxLayers at grazing angles, minLayers looking straight down.
 int pxLayerCount(vec2 P) {
-    float n = mix(float(pxMaxLayers), float(pxMinLayers), pxCosTheta(P));
+    float n = pxLerp(float(pxMaxLayers), float(pxMinLayers), pxCosTheta(P));
     return max(1, int(n + 0.5f));
 }
 
 // f(t) = h(uv(t)) - (1 - t): the ray is at or below the surface where f >= 0.
 float pxDepthGap(vec2 uv0, vec2 P, float t) {
-    return pxHeight(uv0 + P * t) - (1.0f - t);
+    PX_PRECISE float gap = pxHeight(uv0 + P * t) - (1.0f - t);
+    return gap;
 }
 
 // Smallest s in [0, sMax] with A s^2 + B s + C >= 0, given C < 0; -1 if none. Uses the

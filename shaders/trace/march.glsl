@@ -38,6 +38,9 @@ PxBracket pxLinearSearch(vec2 uv0, vec2 P) {
 
 // Where the segment between two samples of f crosses zero; f0 < 0 <= f1 keeps it in [t0, t1].
 float pxLinearRoot(float t0, float t1, float f0, float f1) {
-    float denominator = f1 - f0;
-    return denominator > 0.0f ? t0 + (t1 - t0) * clamp(-f0 / denominator, 0.0f, 1.0f) : t1;
+    PX_PRECISE float denominator = f1 - f0;
+    if (!(denominator > 0.0f))
+        return t1;
+    PX_PRECISE float root = t0 + (t1 - t0) * clamp(-f0 / denominator, 0.0f, 1.0f);
+    return root;
 }

@@ -17,7 +17,7 @@ float pxSoftShadow(vec2 uv, float t, vec2 Q, float softness) {
         return 1.0f;
     float run = length(Q) / pxScale; // uv travelled per unit of height, over s: tan of the polar angle
     float cosL = inversesqrt(1.0f + run * run);
-    int samples = max(1, int(mix(float(pxMaxLayers), float(pxMinLayers), cosL) + 0.5f));
+    int samples = max(1, int(pxLerp(float(pxMaxLayers), float(pxMinLayers), cosL) + 0.5f));
     float dz = (top - z0) / float(samples);
     // The occluder's elevation above the ray is s gap / (rise sqrt(|Q|^2 + s^2)); sinL folds the
     // constant part so that the loop divides by nothing that can be zero.

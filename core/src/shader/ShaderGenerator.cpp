@@ -13,6 +13,8 @@ namespace px {
 
 namespace {
 
+constexpr int kLineBase = 10000; // shader files stay under 10000 lines
+
 // The library every stage may draw from, in declaration order (as TraceKernel.h includes the
 // kernels); the stage's main file comes last. Unreachable items are dropped.
 const std::vector<std::string>& libraryFiles() {
@@ -55,16 +57,26 @@ std::vector<std::string> definesFor(const VariantKey& k) {
     on(k.tbn == TbnSource::Derivatives, "PX_HAS_DERIVATIVE_TBN");
     on(k.output == ShaderOutput::Surface, "PX_HAS_SURFACE_OUTPUT");
     on(k.output == ShaderOutput::Trace, "PX_HAS_TRACE_OUTPUT");
+    // Derived: what the surface shader computes at all.
+    const bool mesh = k.output != ShaderOutput::Trace;
+    const bool parallax = info(k.technique).parallax;
+    on(mesh && (parallax || k.normalSource != NormalSource::None), "PX_HAS_TANGENT_FRAME");
+    on(mesh && (parallax || k.albedoMap || k.surfaceMap || k.normalSource != NormalSource::None ||
+                k.output == ShaderOutput::Surface),
+       "PX_HAS_TEXTURE_COORDINATES");
     return d;
 }
 
+// `inputs` receives the names of the stage inputs (`in` globals) the kept code reads.
 Result<GeneratedShader> generateStage(const VariantKey& key,
                                       const std::vector<std::string>& defines,
-                                      const std::vector<std::string>& files, const char* stage) {
+                                      const std::vector<std::string>& files, const char* stage,
+                                      std::set<std::string>* inputs = nullptr) {
     GeneratedShader s;
     s.defines = defines;
     s.sources.push_back("(generated header)");
-    const std::set<std::string> defineSet(defines.begin(), defines.end());
+    std::set<std::string> defineSet(defines.begin(), defines.end());
+    defineSet.insert("PX_PRECISE"); // emitted as `precise` below
     std::vector<shader::GlslItem> items;
     for (std::size_t k = 0; k < files.size(); ++k) {
         const std::string path = "shaders/" + files[k];
@@ -86,13 +98,25 @@ Result<GeneratedShader> generateStage(const VariantKey& key,
         shader::reachableItems(items, {"main"}, external);
     if (external.count("main"))
         return Error{"shaders/" + files.back() + ": no main()"};
+    if (inputs) {
+        for (const shader::GlslItem* item : kept) {
+            // Skip the item's leading comment lines.
+            std::size_t code = item->text.find_first_not_of(" \t\n");
+            while (code != std::string::npos && item->text.compare(code, 2, "//") == 0)
+                code = item->text.find_first_not_of(" \t\n", item->text.find('\n', code));
+            if (code != std::string::npos && item->text.compare(code, 3, "in ") == 0)
+                inputs->insert(item->name);
+        }
+    }
 
     char keyHex[16];
     std::snprintf(keyHex, sizeof keyHex, "0x%04x", key.bits());
     std::string text = "#version 430 core\n";
     text += "// Parallax Studio shader variant " + key.name() + " (key " + keyHex + "), " + stage +
             " stage.\n// Generated from shaders/ by core/src/shader/ShaderGenerator.cpp: only the "
-            "code this variant reaches.\n// #line source numbers:\n";
+            "code this variant reaches.\n// #line L S: source S, line L - S * " +
+            std::to_string(kLineBase) +
+            " of it (the line carries the source: Mesa reports none):\n";
     std::set<int> used;
     for (const shader::GlslItem* item : kept)
         used.insert(item->file);
@@ -100,6 +124,8 @@ Result<GeneratedShader> generateStage(const VariantKey& key,
         text += "//   " + std::to_string(k) + " " + s.sources[static_cast<std::size_t>(k)] + "\n";
     for (const std::string& d : defines)
         text += "#define " + d + " 1\n";
+    if (external.count("PX_PRECISE"))
+        text += "#define PX_PRECISE precise\n";
     for (const shader::Binding& b : shader::bindings()) {
         if (external.count(b.name)) {
             text += shader::declaration(b) + "\n";
@@ -117,8 +143,8 @@ Result<GeneratedShader> generateStage(const VariantKey& key,
         if (item->file == file && gap > 0 && gap <= 3)
             text.append(static_cast<std::size_t>(gap), '\n'); // keep the file's blank lines
         else if (item->file != file || gap != 0)
-            text += "#line " + std::to_string(item->firstLine) + " " + std::to_string(item->file) +
-                    "\n";
+            text += "#line " + std::to_string(kLineBase * item->file + item->firstLine) + " " +
+                    std::to_string(item->file) + "\n";
         text += item->text;
         file = item->file;
         nextLine = item->firstLine +
@@ -139,15 +165,21 @@ Result<GeneratedProgram> generateProgram(const VariantKey& requested) {
 
     GeneratedProgram program;
     program.key = key;
-    Result<GeneratedShader> vertex = generateStage(
-        key, defines, {trace ? "render/trace.vert.glsl" : "render/surface.vert.glsl"}, "vertex");
-    if (!vertex)
-        return vertex.error();
+    // The fragment stage first: the vertex stage writes only the outputs it reads.
     std::vector<std::string> files = libraryFiles();
     files.push_back(trace ? "render/trace.frag.glsl" : "render/surface.frag.glsl");
-    Result<GeneratedShader> fragment = generateStage(key, defines, files, "fragment");
+    std::set<std::string> inputs;
+    Result<GeneratedShader> fragment = generateStage(key, defines, files, "fragment", &inputs);
     if (!fragment)
         return fragment.error();
+    std::vector<std::string> vertexDefines = defines;
+    for (const std::string& input : inputs)
+        vertexDefines.push_back("PX_FRAGMENT_READS_" + macroName(input));
+    Result<GeneratedShader> vertex =
+        generateStage(key, vertexDefines,
+                      {trace ? "render/trace.vert.glsl" : "render/surface.vert.glsl"}, "vertex");
+    if (!vertex)
+        return vertex.error();
     program.vertex = std::move(*vertex);
     program.fragment = std::move(*fragment);
     return program;
@@ -162,14 +194,17 @@ std::string mapCompilerLog(std::string_view log, const std::vector<std::string>&
     for (auto it = std::sregex_iterator(text.begin(), text.end(), position);
          it != std::sregex_iterator(); ++it) {
         const std::smatch& m = *it;
-        const unsigned long source = std::stoul(m[2].str());
-        out.append(text, last, m.position(0) - last);
-        if (source < sources.size()) {
-            const std::string line = m[4].matched ? m[4].str() : m[5].str();
-            out += m[1].str() + sources[source] + ":" + line;
-        } else {
-            out += m[0].str();
+        unsigned long source = std::stoul(m[2].str());
+        unsigned long line = std::stoul(m[4].matched ? m[4].str() : m[5].str());
+        if (line >= static_cast<unsigned long>(kLineBase)) {
+            source = line / kLineBase;
+            line %= kLineBase;
         }
+        out.append(text, last, m.position(0) - last);
+        if (source < sources.size())
+            out += m[1].str() + sources[source] + ":" + std::to_string(line);
+        else
+            out += m[0].str();
         last = m.position(0) + m.length(0);
     }
     out.append(text, last, std::string::npos);

@@ -109,6 +109,11 @@ VariantKey canonical(VariantKey k) {
         k.shadow = false; // shadows are traced from a hit: only parallax techniques have one
     if (k.technique == Technique::None)
         k.normalSource = NormalSource::None; // plain texture
+    if (k.output == ShaderOutput::Color && info(k.technique).parallax &&
+        k.normalSource == NormalSource::None && !k.albedoMap && !k.surfaceMap && !k.shadow &&
+        k.wrap == WrapMode::Repeat)
+        k.technique =
+            Technique::None; // nothing reads the hit (no map, no discard): it draws as none
     if (!k.readsHeightMap())
         k.wrap = WrapMode::Repeat; // the other maps' wrap is sampler state, not shader code
     return k;

@@ -208,8 +208,8 @@ void ShaderGeneratorTest::lineDirectivesPointAtTheirFiles() {
             for (std::string out; std::getline(in, out);) {
                 std::smatch m;
                 if (std::regex_match(out, m, directive)) {
-                    line = std::stoi(m[1]);
                     source = std::stoi(m[2]);
+                    line = std::stoi(m[1]) - 10000 * source;
                     continue;
                 }
                 if (source <= 0) {
@@ -245,6 +245,11 @@ void ShaderGeneratorTest::compilerLogsNameTheFile() {
              std::string("shaders/trace/pom.glsl:30 : error C1008: undefined variable"));
     // Source numbers the program does not have, and plain numbers, are left alone.
     QCOMPARE(mapCompilerLog("9:3(1): error; 1.5:2", sources), std::string("9:3(1): error; 1.5:2"));
+    // Mesa reports source 0 whatever #line says: the line number carries the source.
+    QCOMPARE(mapCompilerLog("0:20012(2): error: `foo' undeclared", sources),
+             std::string("shaders/trace/pom.glsl:12(2): error: `foo' undeclared"));
+    QCOMPARE(mapCompilerLog("0:5(2): error", sources),
+             std::string("(generated header):5(2): error"));
 }
 
 void ShaderGeneratorTest::invalidKeysAreRefused() {

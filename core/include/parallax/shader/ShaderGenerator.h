@@ -4,8 +4,9 @@
 // #if blocks; then only the functions, structs and globals reachable from main() are kept, and
 // only the uniforms and samplers that kept code reads are declared. So each variant carries
 // exactly the code, samplers and uniforms it uses. Every kept snippet is preceded by
-// `#line LINE SOURCE`, SOURCE indexing GeneratedShader::sources, so compiler errors point at the
-// file in shaders/ (mapCompilerLog() rewrites them to "file:line").
+// `#line L S`, S indexing GeneratedShader::sources and L = S * 10000 + the line in that file (Mesa
+// reports no source numbers, so the line carries the file too): compiler errors point at the file
+// in shaders/, and mapCompilerLog() rewrites them to "shaders/FILE:LINE".
 
 #include "parallax/Result.h"
 #include "parallax/shader/VariantKey.h"

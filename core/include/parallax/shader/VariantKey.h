@@ -63,7 +63,8 @@ inline constexpr std::uint32_t kVariantKeyCount = 1u << kVariantKeyBits;
 // Clears every bit the key's technique and output never read: shadow only on parallax techniques,
 // no normals and no material maps in the trace or surface outputs, wrap only where the height map
 // is read, roughness/metallic only with the metallic-roughness model (Blinn-Phong reads only the
-// occlusion channel of the surface map). Idempotent.
+// occlusion channel of the surface map). A parallax technique whose hit nothing reads (no map, no
+// shadow, no clamp discard) draws exactly as `none` and becomes `none`. Idempotent.
 VariantKey canonical(VariantKey key);
 
 // Every valid canonical key, in bits() order: what `parallax-cli shader --dump-all` writes and
