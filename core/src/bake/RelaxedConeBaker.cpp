@@ -154,11 +154,8 @@ public:
             const Node n = stack[--top];
             const int x0 = n.baseX + (n.x << n.level);
             const int y0 = n.baseY + (n.y << n.level);
-            if (n.level == 0) {
-                if ((x0 < -1 || x0 > 1 || y0 < -1 || y0 > 1) && !beyondPeriod(g, x0, y0) &&
-                    (p.falls(n.x, n.y) & sectorsOf(x0, x0 + g.spanX(), y0, y0 + g.spanY(), g)) &&
-                    mayNarrow(n.x, n.y, x0, y0, b, c))
-                    visit(x0, y0);
+            if (n.level == 0) { // a root of a 1-cell map
+                visitCell(n.x, n.y, x0, y0, 0xff, b, c, visit);
                 continue;
             }
             if (--budget < 0) {
@@ -167,6 +164,16 @@ public:
                 const float bound2 = nodeBound2(n, b, c);
                 if (bound2 < c * c * kMargin)
                     c = std::min(c, std::sqrt(bound2) * (1.0f - 1e-5f));
+                continue;
+            }
+            if (n.level == 1) { // its cells, at once
+                const int x1 = n.baseX + std::min((n.x + 1) * 2, g.cellsX) - 1;
+                const int y1 = n.baseY + std::min((n.y + 1) * 2, g.cellsY) - 1;
+                const std::uint8_t sectors = sectorsOf(x0, x1 + g.spanX(), y0, y1 + g.spanY(), g);
+                for (int j = 0; j < 2 && 2 * n.y + j < p.height(0); ++j) {
+                    for (int i = 0; i < 2 && 2 * n.x + i < p.width(0); ++i)
+                        visitCell(2 * n.x + i, 2 * n.y + j, x0 + i, y0 + j, sectors, b, c, visit);
+                }
                 continue;
             }
             // Children, nearest-bound last so that it is popped first.
@@ -179,7 +186,7 @@ public:
                     const Node k{cl, 2 * n.x + i, 2 * n.y + j, n.baseX, n.baseY};
                     if (k.x >= cw || k.y >= ch)
                         continue;
-                    const float bound = cl == 0 ? 0.0f : nodeBound2(k, b, c);
+                    const float bound = nodeBound2(k, b, c);
                     if (bound >= c * c * kMargin)
                         continue;
                     int at = count++;
@@ -226,6 +233,19 @@ private:
     }
 
     static constexpr float kMargin = 1.0f + 1e-5f;
+
+    // Cell (x, y) of the map at offset (ox, oy), seen within `sectors`: the cheap tests first
+    // (not one of the 3x3 already done, can fall in these directions, plain bound below c).
+    template <typename Visit>
+    void visitCell(int x, int y, int ox, int oy, std::uint8_t sectors, const Apex& b, float c,
+                   Visit& visit) const {
+        if ((ox >= -1 && ox <= 1 && oy >= -1 && oy <= 1) || beyondPeriod(g, ox, oy))
+            return;
+        const std::uint8_t falls = p.falls(x, y) & sectors;
+        if (falls && mayNarrow(x, y, ox, oy, b, c) &&
+            (falls & sectorsOf(ox, ox + g.spanX(), oy, oy + g.spanY(), g)))
+            visit(ox, oy);
+    }
 
     // Whether cell (x, y) of the map, at offset (ox, oy), can narrow c by its plain bound: the
     // cheap test before relaxedCell(), with the cell's corners read directly.

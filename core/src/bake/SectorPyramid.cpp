@@ -9,18 +9,14 @@ namespace px::cone {
 namespace {
 
 // Sector of the direction (x / W, y / H), x, y not both 0: k covers angles [45 k, 45 (k + 1)]
-// degrees from +u towards +v. Compares |u| and |v| exactly in integers.
+// degrees from +u towards +v. A direction on a sector's edge may go to either neighbour (sectors
+// are closed). Compares |u| and |v| exactly in integers.
 int sectorOf(int x, int y, const CellGrid& g) {
+    static constexpr std::uint8_t kSector[8] = {0, 1, 3, 2, 7, 6, 4, 5};
     const long long u = static_cast<long long>(x) * g.field->height; // x / W scaled by W H
     const long long v = static_cast<long long>(y) * g.field->width;
-    if (v >= 0) {
-        if (u > 0)
-            return u >= v ? 0 : 1;
-        return -u <= v ? (v > 0 ? 2 : 3) : 3; // u <= 0
-    }
-    if (u <= 0)
-        return -u >= -v ? 4 : 5;
-    return u <= -v ? 6 : 7;
+    const int steep = (u < 0 ? -u : u) < (v < 0 ? -v : v);
+    return kSector[(v < 0) << 2 | (u < 0) << 1 | steep];
 }
 
 // For a set of sector bits (the sectors of a shape's corners), the contiguous arc they span:
@@ -162,13 +158,11 @@ SectorPyramid::SectorPyramid(const CellGrid& g, float heightMax)
 float SectorPyramid::maxFalling(int level, int x, int y, std::uint8_t sectors) const {
     const std::uint16_t* q =
         &m_levels[level][(static_cast<std::size_t>(y) * m_width[level] + x) * 8];
-    int best = -1;
-    for (int s = 0; s < 8; ++s) {
-        if ((sectors >> s) & 1)
-            best = std::max(best, static_cast<int>(q[s]));
-    }
+    unsigned best = 0;
+    for (unsigned m = sectors; m != 0; m &= m - 1)
+        best = std::max<unsigned>(best, q[__builtin_ctz(m)]);
     // A stored 0 is a cell of height 0 or none: neither rises above any apex.
-    return best <= 0 ? -1.0f : best * m_scale;
+    return best == 0 ? -1.0f : static_cast<float>(best) * m_scale;
 }
 
 } // namespace px::cone

@@ -1,0 +1,129 @@
+// The bakers at the sizes of the targets (normal 4096², cone and relaxed cone 1024²), and the
+// brute-force bakers at 256² with the fast ones at the same size, in the same run: the ratios
+// printed at the end are the speed-ups. Peak memory is what a bake allocates on top of its input,
+// as a multiple of the map's size in floats (target: under 4).
+//
+//   parallax-bench-bake                      # everything (the brute forces take a while)
+//   parallax-bench-bake --benchmark_filter=Normal
+
+#include "HeapCounter.h"
+#include "parallax/bake/ConeMapBaker.h"
+#include "parallax/bake/ConeMapReference.h"
+#include "parallax/bake/NormalMapBaker.h"
+#include "parallax/sample/ProceduralMaps.h"
+
+#include <benchmark/benchmark.h>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <thread>
+
+using namespace px;
+
+namespace {
+
+// The maps: smooth value noise (wide cones, the search's worst case) and bricks (flat tops and
+// steep mortar, an artist's typical map).
+HeightField mapFor(int kind, int size) {
+    return makeProceduralMap(kind == 0 ? ProceduralMap::Noise : ProceduralMap::Bricks, size, size,
+                             1);
+}
+
+template <typename Bake> void run(benchmark::State& state, Bake bake) {
+    const int size = static_cast<int>(state.range(0));
+    const HeightField field = mapFor(static_cast<int>(state.range(1)), size);
+    double peak = 0;
+    for (auto _ : state) {
+        bench::resetHeapPeak();
+        const std::size_t before = bench::heapInUse();
+        bake(field);
+        peak = std::max(peak, static_cast<double>(bench::heapPeak() - before));
+    }
+    state.counters["peak_x_float_map"] = peak / (4.0 * size * size);
+    state.SetLabel(state.range(1) == 0 ? "noise" : "bricks");
+}
+
+void Normal(benchmark::State& state) {
+    run(state, [](const HeightField& f) {
+        NormalBakeOptions o;
+        o.filter = NormalFilter::Sobel;
+        benchmark::DoNotOptimize(bakeNormalMap(f, o));
+    });
+}
+void Cone(benchmark::State& state) {
+    run(state, [](const HeightField& f) {
+        benchmark::DoNotOptimize(bakeConeMap(f, WrapMode::Repeat, ConeKind::Conservative));
+    });
+}
+void RelaxedCone(benchmark::State& state) {
+    run(state, [](const HeightField& f) {
+        benchmark::DoNotOptimize(bakeConeMap(f, WrapMode::Repeat, ConeKind::Relaxed));
+    });
+}
+void ConeBruteForce(benchmark::State& state) {
+    run(state, [](const HeightField& f) {
+        benchmark::DoNotOptimize(bakeConservativeConesBruteForce(f, WrapMode::Repeat));
+    });
+}
+void RelaxedConeBruteForce(benchmark::State& state) {
+    run(state, [](const HeightField& f) {
+        benchmark::DoNotOptimize(bakeRelaxedConesBruteForce(f, WrapMode::Repeat));
+    });
+}
+
+void sizes(benchmark::internal::Benchmark* b, int size, int iterations) {
+    b->Args({size, 0})
+        ->Args({size, 1})
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(iterations);
+}
+
+BENCHMARK(Normal)->Apply([](auto* b) { sizes(b, 4096, 3); });
+BENCHMARK(Cone)->Apply([](auto* b) { sizes(b, 1024, 3); });
+BENCHMARK(RelaxedCone)->Apply([](auto* b) { sizes(b, 1024, 1); });
+BENCHMARK(Cone)->Apply([](auto* b) { sizes(b, 256, 5); });
+BENCHMARK(ConeBruteForce)->Apply([](auto* b) { sizes(b, 256, 1); });
+BENCHMARK(RelaxedCone)->Apply([](auto* b) { sizes(b, 256, 3); });
+BENCHMARK(RelaxedConeBruteForce)->Apply([](auto* b) { sizes(b, 256, 1); });
+
+// Keeps every run's time, to print the fast/brute ratios of one run.
+class RatioReporter : public benchmark::ConsoleReporter {
+public:
+    void ReportRuns(const std::vector<Run>& runs) override {
+        for (const Run& r : runs)
+            times[r.benchmark_name()] = r.GetAdjustedRealTime();
+        ConsoleReporter::ReportRuns(runs);
+    }
+    std::map<std::string, double> times;
+};
+
+} // namespace
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 1;
+    std::printf("threads: %u\n", std::thread::hardware_concurrency());
+    RatioReporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    for (const char* map : {"0", "1"}) {
+        for (auto [fast, brute] :
+             {std::pair{"Cone", "ConeBruteForce"}, {"RelaxedCone", "RelaxedConeBruteForce"}}) {
+            const std::string suffix = std::string("/256/") + map + "/iterations:";
+            auto find = [&](const std::string& name) -> double {
+                for (const auto& [key, t] : reporter.times) {
+                    if (key.rfind(name + suffix, 0) == 0)
+                        return t;
+                }
+                return 0;
+            };
+            const double f = find(fast), b = find(brute);
+            if (f > 0 && b > 0)
+                std::printf("%s 256² (%s): brute force %.0f ms, fast %.1f ms: %.0fx faster\n", fast,
+                            map[0] == '0' ? "noise" : "bricks", b, f, b / f);
+        }
+    }
+    benchmark::Shutdown();
+    return 0;
+}
