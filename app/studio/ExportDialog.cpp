@@ -31,6 +31,9 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
                              this);
     auto* browse = new QToolButton(this);
     browse->setText(tr("…"));
+    browse->setToolTip(tr("Choose the folder to export into."));
+    m_folder->setToolTip(tr("The export's own folder: created, or replaced when it holds an "
+                            "earlier export and \"Replace\" is ticked."));
     auto* folderRow = new QHBoxLayout;
     folderRow->addWidget(m_folder, 1);
     folderRow->addWidget(browse);
@@ -67,10 +70,12 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
     layout->addWidget(buttons);
 
     connect(browse, &QToolButton::clicked, this, [this] {
-        const QString dir =
-            QFileDialog::getSaveFileName(this, tr("Export Folder"), m_folder->text());
-        if (!dir.isEmpty())
-            m_folder->setText(dir);
+        // Pick where the export goes; the export is a new folder in there, named after the file.
+        const QFileInfo current(m_folder->text());
+        const QString parent =
+            QFileDialog::getExistingDirectory(this, tr("Export Into"), current.absolutePath());
+        if (!parent.isEmpty())
+            m_folder->setText(parent + QLatin1Char('/') + current.fileName());
     });
     connect(m_format, &QComboBox::currentTextChanged, this, [this](const QString& format) {
         m_green->setEnabled(format == QLatin1String("package"));

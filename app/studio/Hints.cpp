@@ -136,8 +136,9 @@ QString technique(Technique t) {
     return {};
 }
 QString viewportHelp() {
-    return QObject::tr("Drag: orbit. Wheel: zoom. Ctrl+drag: move the light. Click: make this the "
-                       "active viewport.");
+    return QObject::tr("Drag or arrows: orbit. Wheel or +/-: zoom. Ctrl+drag or Ctrl+arrows: move "
+                       "the light. Double-click: reset the camera. Click: make this the active "
+                       "viewport.");
 }
 
 } // namespace px::studio::hints

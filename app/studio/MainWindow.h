@@ -90,6 +90,7 @@ private:
     void exportDialog();
     void showShortcuts();
     void onBakeFinished(const BakeOutcome& outcome);
+    void bakeMissingConeMaps();
 
     MaterialDocument* m_document;
     BakeRunner* m_baker;

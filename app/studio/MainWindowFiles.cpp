@@ -7,6 +7,7 @@
 #include "MaterialSaver.h"
 #include "RecentFiles.h"
 #include "SampleMaterial.h"
+#include "ViewportGrid.h"
 
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -53,14 +54,26 @@ bool MainWindow::openFile(const QString& path) {
     m_document->reset(loaded->state, QFileInfo(path).absoluteFilePath());
     m_recent->add(path);
     showNotes(loaded->notes);
-    // A cone technique opened without a cone map file: bake it in the background.
-    const DocumentState& s = m_document->state();
-    const TechniqueInfo& t = info(s.material.technique);
-    if (t.needsConeMap && !s.hasMap(MapKind::Cone))
-        startBake(BakeKind::Cone);
-    if (t.needsRelaxedConeMap && !s.hasMap(MapKind::RelaxedCone))
-        startBake(BakeKind::RelaxedCone);
+    bakeMissingConeMaps();
     return true;
+}
+
+void MainWindow::bakeMissingConeMaps() {
+    // A viewport on a cone technique without its map (a material saved without one, a new height
+    // map): bake it in the background; the viewport says it is waiting meanwhile.
+    const DocumentState& s = m_document->state();
+    if (!s.hasMap(MapKind::Height) || m_baker->isBusy())
+        return;
+    bool cone = false, relaxed = false;
+    for (int v = 0; v < m_viewports->layoutCount(); ++v) {
+        const TechniqueInfo& t = info(s.view(v).technique);
+        cone |= t.needsConeMap && !s.hasMap(MapKind::Cone);
+        relaxed |= t.needsRelaxedConeMap && !s.hasMap(MapKind::RelaxedCone);
+    }
+    if (cone)
+        startBake(BakeKind::Cone);
+    if (relaxed)
+        startBake(BakeKind::RelaxedCone);
 }
 
 bool MainWindow::saveTo(const QString& path) {
@@ -106,6 +119,7 @@ bool MainWindow::maybeSave() {
 
 void MainWindow::adopt(const QString& text, const DocumentState& state) {
     m_document->edit(text, [&](DocumentState& s) { s = state; });
+    bakeMissingConeMaps();
 }
 
 bool MainWindow::loadMap(MapKind kind, const QString& path, bool depth) {

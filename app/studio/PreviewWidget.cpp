@@ -4,6 +4,8 @@
 #include "PreviewRenderer.h"
 #include "ViewInteraction.h"
 
+#include <QKeyEvent>
+#include <QLinearGradient>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
@@ -114,6 +116,8 @@ void PreviewWidget::paintGL() {
             painter.drawImage(rect(), heat);
         }
     }
+    if (m_renderer && m_scene.overlays.heatMap && m_stats.valid)
+        drawHeatLegend(painter);
     if (m_scene.overlays.wipe) {
         const double x = m_scene.overlays.wipePosition * width();
         painter.setPen(QPen(Qt::white, 2));
@@ -138,6 +142,25 @@ void PreviewWidget::paintGL() {
     painter.end();
     emit frameRendered();
     emit statsChanged(); // the frame time
+}
+
+void PreviewWidget::drawHeatLegend(QPainter& painter) {
+    // The heat map's scale, bottom left: what blue, green, yellow and red mean.
+    const QFontMetrics fm(font());
+    const int h = fm.height();
+    const QRect bar(h / 2, height() - 2 * h, 8 * h, h / 2);
+    QLinearGradient gradient(bar.topLeft(), bar.topRight());
+    gradient.setColorAt(0.0, QColor(44, 95, 214));
+    gradient.setColorAt(0.25, QColor(63, 179, 79));
+    gradient.setColorAt(0.5, QColor(240, 208, 58));
+    gradient.setColorAt(1.0, QColor(216, 52, 44));
+    painter.fillRect(bar.adjusted(-4, -4, 4, h + 4), QColor(0, 0, 0, 150));
+    painter.fillRect(bar, gradient);
+    painter.setPen(Qt::white);
+    const QRect labels(bar.left(), bar.bottom() + 2, bar.width(), h);
+    painter.drawText(labels, Qt::AlignLeft, QStringLiteral("0"));
+    painter.drawText(labels, Qt::AlignHCenter, QStringLiteral("1"));
+    painter.drawText(labels, Qt::AlignRight, tr("≥2 texels"));
 }
 
 void PreviewWidget::mousePressEvent(QMouseEvent* event) {
@@ -174,6 +197,45 @@ void PreviewWidget::mouseMoveEvent(QMouseEvent* event) {
 
 void PreviewWidget::mouseReleaseEvent(QMouseEvent*) {
     m_drag = Drag::None;
+}
+
+void PreviewWidget::mouseDoubleClickEvent(QMouseEvent* event) {
+    emit cameraDragged(defaultCamera());
+    event->accept();
+}
+
+void PreviewWidget::keyPressEvent(QKeyEvent* event) {
+    // Arrows orbit (Ctrl: move the light), +/- zoom: the view without a mouse.
+    const double step = 10.0 / kDegreesPerPixel; // ten degrees
+    QPointF delta;
+    switch (event->key()) {
+    case Qt::Key_Left:
+        delta = {-step, 0};
+        break;
+    case Qt::Key_Right:
+        delta = {step, 0};
+        break;
+    case Qt::Key_Up:
+        delta = {0, -step};
+        break;
+    case Qt::Key_Down:
+        delta = {0, step};
+        break;
+    case Qt::Key_Plus:
+    case Qt::Key_Equal:
+        emit cameraDragged(zoom(m_scene.view.camera, 1));
+        return;
+    case Qt::Key_Minus:
+        emit cameraDragged(zoom(m_scene.view.camera, -1));
+        return;
+    default:
+        QOpenGLWidget::keyPressEvent(event);
+        return;
+    }
+    if (event->modifiers() & Qt::ControlModifier)
+        emit lightDragged(moveLight(m_scene.view.light, delta));
+    else
+        emit cameraDragged(orbit(m_scene.view.camera, delta));
 }
 
 void PreviewWidget::wheelEvent(QWheelEvent* event) {

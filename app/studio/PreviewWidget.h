@@ -49,6 +49,8 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
 
 private:
     enum class Drag { None, Orbit, Light, Wipe };
@@ -56,6 +58,7 @@ private:
     // The figures against the exact intersection need two extra passes: taken once the scene
     // has stayed still for a moment, not on every frame of a drag.
     void measure();
+    void drawHeatLegend(class QPainter& painter);
 
     PreviewScene m_scene;
     PreviewStats m_stats;

@@ -17,6 +17,7 @@
 #include "StudioTestSupport.h"
 #include "TechniquePanel.h"
 #include "WorkPrecisionView.h"
+#include "parallax/image/ImageFile.h"
 #include "parallax/material/MaterialFile.h"
 
 #include <QAbstractButton>
@@ -323,6 +324,26 @@ private slots:
         QVERIFY(w.isVisible());
         w.document()->undoStack()->undo();
         QVERIFY(w.close()); // nothing to lose: no question
+    }
+
+    void newHeightRebakesTheConeAViewportUses() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Bricks, 32);
+        w.startBake(BakeKind::Cone);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.baker()->isBusy(), 60000);
+        w.document()->edit("cone", [](DocumentState& s) {
+            s.setView(0, {Technique::Cone, info(Technique::Cone).defaults});
+        });
+        Image flat(16, 16, 1);
+        const std::string file = m_dir.filePath("flat_height.png").toStdString();
+        QVERIFY(writeImage(file, flat, {PixelFormat::UInt16, false}));
+        QVERIFY(w.loadMap(MapKind::Height, QString::fromStdString(file)));
+        // The old cone map went with the old surface; a new one is baking for viewport 1.
+        QVERIFY(w.baker()->isBusy() || w.document()->state().hasMap(MapKind::Cone));
+        QTRY_VERIFY_WITH_TIMEOUT(!w.baker()->isBusy(), 60000);
+        QVERIFY(w.document()->state().hasMap(MapKind::Cone));
+        QCOMPARE(w.document()->state().assets->cone.width, 16);
     }
 
     void recentFilesNewestFirst() {

@@ -340,6 +340,13 @@ private slots:
         const float after = left->scene().view.light.azimuthDeg;
         QVERIFY(std::abs(after - before) > 5.0f);
         QCOMPARE(w->viewports()->viewport(1)->view().light.azimuthDeg, after);
+        // The keyboard does the same: Ctrl+arrows move the light, arrows orbit.
+        left->setFocus();
+        QTest::keyClick(left, Qt::Key_Left, Qt::ControlModifier);
+        QCOMPARE(left->scene().view.light.azimuthDeg, after - 10.0f);
+        const float orbitBefore = left->scene().view.camera.azimuthDeg;
+        QTest::keyClick(left, Qt::Key_Right);
+        QVERIFY(std::abs(left->scene().view.camera.azimuthDeg - orbitBefore) > 5.0f);
         // Unlinked, a plain drag orbits only its own view.
         w->viewports()->setLinked(false);
         const float camera = w->viewports()->viewport(1)->view().camera.azimuthDeg;
