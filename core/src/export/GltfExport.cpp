@@ -138,8 +138,14 @@ Status writeGltf(ExportJob& job) {
     }
     extras.maps.albedo = pbr.contains("baseColorTexture") ? job.stem + "_basecolor.png" : "";
     extras.maps.normal = material.contains("normalTexture") ? job.stem + "_normal.png" : "";
-    if (extras.normalSource == NormalSource::Map && extras.maps.normal.empty())
-        extras.normalSource = NormalSource::HeightCentral;
+    // Normals: the exported normal map when there is one (engines read it, so should the
+    // extras); from height only where the height map went out too.
+    const bool heightNormals = extras.normalSource == NormalSource::HeightCentral ||
+                               extras.normalSource == NormalSource::HeightSobel;
+    if (!extras.maps.normal.empty() && extras.maps.height.empty())
+        extras.normalSource = NormalSource::Map;
+    else if (extras.maps.normal.empty() && (!heightNormals || extras.maps.height.empty()))
+        extras.normalSource = NormalSource::None;
     material["extras"] = {{"parallaxStudio", Json::parse(materialToJson(extras))}};
 
     const PlaneMesh plane(m.tiling);

@@ -32,6 +32,7 @@ private slots:
     void packageNormalGreenConverted();
     void packagePacksSurfaceMapForTheShader();
     void gltfDescribesPlaneMaterialAndExtras();
+    void gltfExtrasAlwaysAValidMaterial();
     void godotMaterialResource();
     void unrealTexturesAndNote();
     void unityPacking();
@@ -263,6 +264,18 @@ void ExporterTest::gltfDescribesPlaneMaterialAndExtras() {
     QCOMPARE(gltf["buffers"][0]["byteLength"].get<std::uintmax_t>(),
              fs::file_size(path("out/bricks.bin")));
     QCOMPARE(gltf["samplers"][0]["wrapS"].get<int>(), 10497);
+}
+
+void ExporterTest::gltfExtrasAlwaysAValidMaterial() {
+    // No parallax: no height map goes out, so the extras take their normals from the normal map.
+    m_material.technique = Technique::None;
+    QVERIFY(run(ExportFormat::Gltf).ok());
+    const nlohmann::json gltf = readJson(path("out/bricks.gltf"));
+    const nlohmann::json& extras = gltf["materials"][0]["extras"]["parallaxStudio"];
+    QVERIFY(!extras["maps"].contains("height"));
+    QCOMPARE(extras["normal"]["source"].get<std::string>(), std::string("map"));
+    Result<Material> parsed = parseMaterial(extras.dump(), "extras");
+    QVERIFY2(parsed.ok(), parsed.ok() ? "" : parsed.error().message.c_str());
 }
 
 void ExporterTest::godotMaterialResource() {
