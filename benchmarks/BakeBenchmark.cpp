@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <sys/resource.h>
 #include <thread>
 
 using namespace px;
@@ -29,17 +30,31 @@ HeightField mapFor(int kind, int size) {
                              1);
 }
 
+// CPU seconds of the whole process (every thread): on a shared machine, this divided by the
+// cores is what the wall time would be with the cores to itself.
+double processCpuSeconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    auto seconds = [](const timeval& t) {
+        return static_cast<double>(t.tv_sec) + t.tv_usec * 1e-6;
+    };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 template <typename Bake> void run(benchmark::State& state, Bake bake) {
     const int size = static_cast<int>(state.range(0));
     const HeightField field = mapFor(static_cast<int>(state.range(1)), size);
-    double peak = 0;
+    double peak = 0, cpu = 0;
     for (auto _ : state) {
         bench::resetHeapPeak();
         const std::size_t before = bench::heapInUse();
+        const double cpuBefore = processCpuSeconds();
         bake(field);
+        cpu += processCpuSeconds() - cpuBefore;
         peak = std::max(peak, static_cast<double>(bench::heapPeak() - before));
     }
     state.counters["peak_x_float_map"] = peak / (4.0 * size * size);
+    state.counters["cpu_all_threads_s"] = cpu / static_cast<double>(state.iterations());
     state.SetLabel(state.range(1) == 0 ? "noise" : "bricks");
 }
 
@@ -91,11 +106,15 @@ BENCHMARK(RelaxedConeBruteForce)->Apply([](auto* b) { sizes(b, 256, 1); });
 class RatioReporter : public benchmark::ConsoleReporter {
 public:
     void ReportRuns(const std::vector<Run>& runs) override {
-        for (const Run& r : runs)
+        for (const Run& r : runs) {
             times[r.benchmark_name()] = r.GetAdjustedRealTime();
+            auto cpu = r.counters.find("cpu_all_threads_s");
+            cpus[r.benchmark_name()] =
+                cpu == r.counters.end() ? 0.0 : static_cast<double>(cpu->second);
+        }
         ConsoleReporter::ReportRuns(runs);
     }
-    std::map<std::string, double> times;
+    std::map<std::string, double> times, cpus;
 };
 
 } // namespace
@@ -111,17 +130,21 @@ int main(int argc, char** argv) {
         for (auto [fast, brute] :
              {std::pair{"Cone", "ConeBruteForce"}, {"RelaxedCone", "RelaxedConeBruteForce"}}) {
             const std::string suffix = std::string("/256/") + map + "/iterations:";
-            auto find = [&](const std::string& name) -> double {
-                for (const auto& [key, t] : reporter.times) {
+            auto find = [&](const std::map<std::string, double>& values,
+                            const std::string& name) -> double {
+                for (const auto& [key, value] : values) {
                     if (key.rfind(name + suffix, 0) == 0)
-                        return t;
+                        return value;
                 }
                 return 0;
             };
-            const double f = find(fast), b = find(brute);
+            const double f = find(reporter.times, fast), b = find(reporter.times, brute);
+            const double fc = find(reporter.cpus, fast), bc = find(reporter.cpus, brute);
             if (f > 0 && b > 0)
-                std::printf("%s 256² (%s): brute force %.0f ms, fast %.1f ms: %.0fx faster\n", fast,
-                            map[0] == '0' ? "noise" : "bricks", b, f, b / f);
+                std::printf("%s 256² (%s): brute force %.0f ms, fast %.1f ms: %.1fx faster (CPU "
+                            "time: %.1fx)\n",
+                            fast, map[0] == '0' ? "noise" : "bricks", b, f, b / f,
+                            fc > 0 ? bc / fc : 0.0);
         }
     }
     benchmark::Shutdown();

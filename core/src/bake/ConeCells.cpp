@@ -161,8 +161,7 @@ bool cellFallsAway(const CellGrid& g, const Apex& b, int ox, int oy, Shape shape
 }
 
 double cellBound(const CellGrid& g, const Apex& apex, int ox, int oy, Shape shape, bool fallingOnly,
-                 float cutoff) {
-    constexpr double kTolerance = kCellTolerance;
+                 float cutoff, double tolerance) {
     constexpr int kMaxDepth = 24;
     constexpr int kMaxSplits = 2048; // then every remaining piece is accepted as it is
     const CellFrame f = cellFrame(g, apex, ox, oy, shape);
@@ -206,7 +205,7 @@ double cellBound(const CellGrid& g, const Apex& apex, int ox, int oy, Shape shap
                 upper = std::min(upper, f.distance(x, x, y, y) / (h[k] - hb));
             }
         }
-        if (lower >= upper * (1 - kTolerance) || p.depth >= kMaxDepth || splits >= kMaxSplits) {
+        if (lower >= upper * (1 - tolerance) || p.depth >= kMaxDepth || splits >= kMaxSplits) {
             best = std::min(best, lower);
             continue;
         }

@@ -54,12 +54,22 @@ public:
         if (!(b.h < hMax))
             return 1.0f; // nothing rises above the apex
         float c = 1.0f;
-        // Level 0: the 3x3 cells around cell (bx, by), each with its own exact bound (the four
-        // with b as a corner analytically): they set the cone on most maps.
+        // Level 0: the 3x3 cells around cell (bx, by); the four with b as a corner exactly (the
+        // plain bound would be 0 there), the others by their maximum at their nearest point.
         for (int oy = -1; oy <= 1; ++oy) {
             for (int ox = -1; ox <= 1; ++ox) {
-                if (g.repeat() || (inside(bx + ox, g.cellsX) && inside(by + oy, g.cellsY)))
-                    c = conservativeCell(g, b, ox, oy, c);
+                if (!g.repeat() && (!inside(bx + ox, g.cellsX) || !inside(by + oy, g.cellsY)))
+                    continue;
+                if (isApexCell(ox, oy, g)) {
+                    c = std::min(c, floatDown(apexConservativeBound(g, b, ox, oy, g.shape())));
+                    continue;
+                }
+                const float m = p.at(0, wrapIndex(bx + ox, g.cellsX, g.wrap),
+                                     wrapIndex(by + oy, g.cellsY, g.wrap));
+                if (m > b.h)
+                    c = std::min(
+                        c, texelDistance(gap(ox, ox + g.spanX()), gap(oy, oy + g.spanY()), g) /
+                               (m - b.h));
             }
         }
         Span sx = clip({bx - 1, bx + 1}, g.cellsX), sy = clip({by - 1, by + 1}, g.cellsY);

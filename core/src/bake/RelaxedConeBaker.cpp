@@ -101,8 +101,16 @@ constexpr int kNodeBudget = 4096;
 
 struct Node {
     int level, x, y;  // node of the pyramid
-    int baseX, baseY; // its period's first cell, relative to the apex
+    int baseX, baseY; // its period's first cell (0, or -+ a period with repeat)
 };
+
+// A rectangle of texels, inclusive.
+struct Box {
+    int x0, x1, y0, y1;
+};
+
+// Apexes searched together: a kTile x kTile block of texels.
+constexpr int kTile = 4;
 
 class RelaxedCone {
 public:
@@ -110,98 +118,129 @@ public:
                 float heightMax)
         : g(grid), p(pyramid), edges(strips), hMax(heightMax) {}
 
-    // The cone at texel (bx, by). `left` and `up` are the cells (absolute, extended) that limited
-    // the cones of the texels to the left and above: tried first, they usually set c close to its
-    // final value, so the search below skips most nodes. `witness` receives this texel's
-    // limiting cell.
-    float operator()(int bx, int by, const Witness& left, const Witness& up,
-                     Witness& witness) const {
-        const Apex b{bx, by, g.field->at(bx, by)};
-        if (!(b.h < hMax))
-            return 1.0f;
-        float c = 1.0f;
-        auto visit = [&](int ox, int oy) {
-            const float before = c;
-            c = relaxedCell(g, b, ox, oy, c);
-            if (c < before)
-                witness = {true, bx + ox, by + oy};
+    // The cones of a tile of texels [tx, tx + tw) x [ty, ty + th), searched together: nodes are
+    // opened for the tile as a whole (bounds from the tile's rectangle, lowest apex and widest
+    // cone so far), cells tried for each apex. Neighbouring apexes open nearly the same nodes, so
+    // the traversal is shared. `witness` holds a witness per texel for rows ty - 1 .. ty + th - 1
+    // (row r at (r - ty + 1) * stride): the cells that limited the texels to the left and above
+    // are tried first, and usually set each cone close to its final value.
+    void tile(int tx, int ty, int tw, int th, Witness* witness, int stride, ConeMap& out) const {
+        struct State {
+            Apex b;
+            float c;
+            Witness* witness;
         };
-        witness = {};
-        for (const Witness* w : {&left, &up}) {
-            if (w->valid && valid(b, w->x - bx, w->y - by))
-                visit(w->x - bx, w->y - by);
-        }
-        // The 3x3 cells around the apex (the four with b as a corner are bounded exactly).
-        for (int oy = -1; oy <= 1; ++oy) {
-            for (int ox = -1; ox <= 1; ++ox) {
-                if (valid(b, ox, oy))
-                    visit(ox, oy);
-            }
-        }
-        std::array<Node, 512> stack;
-        int top = 0;
-        const int topLevel = p.levels() - 1;
-        const int periods = g.repeat() ? 1 : 0;
-        for (int py = -periods; py <= periods; ++py) {
-            for (int px = -periods; px <= periods; ++px) {
-                const Node root{topLevel, 0, 0, px * g.cellsX - bx, py * g.cellsY - by};
-                if (topLevel == 0 || nodeBound2(root, b, c) < c * c * kMargin)
-                    stack[top++] = root;
-            }
-        }
-        int budget = kNodeBudget;
-        while (top > 0) {
-            const Node n = stack[--top];
-            const int x0 = n.baseX + (n.x << n.level);
-            const int y0 = n.baseY + (n.y << n.level);
-            if (n.level == 0) { // a root of a 1-cell map
-                visitCell(n.x, n.y, x0, y0, 0xff, b, c, visit);
-                continue;
-            }
-            if (--budget < 0) {
-                // Out of budget (a pathological map): the node's own bound is a valid, looser
-                // bound for every cell under it.
-                const float bound2 = nodeBound2(n, b, c);
-                if (bound2 < c * c * kMargin)
-                    c = std::min(c, std::sqrt(bound2) * (1.0f - 1e-5f));
-                continue;
-            }
-            if (n.level == 1) { // its cells, at once
-                const int x1 = n.baseX + std::min((n.x + 1) * 2, g.cellsX) - 1;
-                const int y1 = n.baseY + std::min((n.y + 1) * 2, g.cellsY) - 1;
-                const std::uint8_t sectors = sectorsOf(x0, x1 + g.spanX(), y0, y1 + g.spanY(), g);
-                for (int j = 0; j < 2 && 2 * n.y + j < p.height(0); ++j) {
-                    for (int i = 0; i < 2 && 2 * n.x + i < p.width(0); ++i)
-                        visitCell(2 * n.x + i, 2 * n.y + j, x0 + i, y0 + j, sectors, b, c, visit);
+        std::array<State, kTile * kTile> apexes;
+        int count = 0;
+        for (int j = 0; j < th; ++j) {
+            for (int i = 0; i < tw; ++i) {
+                const int x = tx + i, y = ty + j;
+                Witness* w = &witness[(j + 1) * stride + x];
+                *w = {};
+                const Apex b{x, y, g.field->at(x, y)};
+                if (!(b.h < hMax)) {
+                    out.g(x, y) = 1.0f; // nothing rises above the apex
+                    continue;
                 }
-                continue;
-            }
-            // Children, nearest-bound last so that it is popped first.
-            Node children[4];
-            float bounds[4];
-            int count = 0;
-            const int cl = n.level - 1, cw = p.width(cl), ch = p.height(cl);
-            for (int j = 0; j < 2; ++j) {
-                for (int i = 0; i < 2; ++i) {
-                    const Node k{cl, 2 * n.x + i, 2 * n.y + j, n.baseX, n.baseY};
-                    if (k.x >= cw || k.y >= ch)
-                        continue;
-                    const float bound = nodeBound2(k, b, c);
-                    if (bound >= c * c * kMargin)
-                        continue;
-                    int at = count++;
-                    for (; at > 0 && bounds[at - 1] < bound; --at) {
-                        children[at] = children[at - 1];
-                        bounds[at] = bounds[at - 1];
+                State s{b, 1.0f, w};
+                auto visit = [&](int ox, int oy) { narrow(s, ox, oy); };
+                const Witness left = i > 0 || x > 0 ? witness[(j + 1) * stride + x - 1] : Witness{};
+                const Witness up = witness[j * stride + x];
+                for (const Witness& v : {left, up}) {
+                    if (v.valid && valid(b, v.x - x, v.y - y))
+                        visit(v.x - x, v.y - y);
+                }
+                // The 3x3 cells around the apex (the four with b as a corner are exact).
+                for (int oy = -1; oy <= 1; ++oy) {
+                    for (int ox = -1; ox <= 1; ++ox) {
+                        if (valid(b, ox, oy))
+                            visit(ox, oy);
                     }
-                    children[at] = k;
-                    bounds[at] = bound;
+                }
+                apexes[count++] = s;
+            }
+        }
+        if (count > 0) {
+            const Box tileBox{tx, tx + tw - 1, ty, ty + th - 1};
+            std::array<Node, 512> stack;
+            int top = 0;
+            const int topLevel = p.levels() - 1;
+            const int periods = g.repeat() ? 1 : 0;
+            for (int py = -periods; py <= periods; ++py) {
+                for (int px = -periods; px <= periods; ++px) {
+                    const Node root{topLevel, 0, 0, px * g.cellsX, py * g.cellsY};
+                    if (topLevel == 0 || tileBound(root, tileBox, apexes, count) < 1.0f)
+                        stack[top++] = root;
                 }
             }
-            for (int k = 0; k < count; ++k)
-                stack[top++] = children[k];
+            int budget = kNodeBudget * count;
+            while (top > 0) {
+                const Node n = stack[--top];
+                if (n.level <= 1) {
+                    // Its cells (the node itself for a 1-cell map), for each apex that the node
+                    // alone may concern.
+                    const int step = n.level == 1 ? 2 : 1;
+                    for (int k = 0; k < count; ++k) {
+                        State& s = apexes[k];
+                        if (count > 1 &&
+                            tileBound(n, Box{s.b.x, s.b.x, s.b.y, s.b.y}, &s, 1) >= 1.0f)
+                            continue;
+                        auto visit = [&](int ox, int oy) { narrow(s, ox, oy); };
+                        const int x0 = n.baseX + n.x * step - s.b.x,
+                                  y0 = n.baseY + n.y * step - s.b.y;
+                        const int x1 = n.baseX + std::min((n.x + 1) * step, g.cellsX) - 1 - s.b.x;
+                        const int y1 = n.baseY + std::min((n.y + 1) * step, g.cellsY) - 1 - s.b.y;
+                        const std::uint8_t sectors =
+                            sectorsOf(x0, x1 + g.spanX(), y0, y1 + g.spanY(), g);
+                        for (int j = 0; j < step && n.y * step + j < p.height(0); ++j) {
+                            for (int i = 0; i < step && n.x * step + i < p.width(0); ++i)
+                                visitCell(n.x * step + i, n.y * step + j, x0 + i, y0 + j, sectors,
+                                          s.b, s.c, visit);
+                        }
+                    }
+                    continue;
+                }
+                if (--budget < 0) {
+                    // Out of budget (a pathological map): the node's own bound is a valid,
+                    // looser bound for every cell under it.
+                    for (int k = 0; k < count; ++k) {
+                        State& s = apexes[k];
+                        const float bound = tileBound(n, Box{s.b.x, s.b.x, s.b.y, s.b.y}, &s, 1);
+                        if (bound < 1.0f) // the node's bound is below c: c = c sqrt(bound)
+                            s.c *= std::sqrt(bound) * (1.0f - 1e-5f);
+                    }
+                    continue;
+                }
+                // Children, nearest-bound last so that it is popped first.
+                Node children[4];
+                float bounds[4];
+                int open = 0;
+                const int cl = n.level - 1, cw = p.width(cl), ch = p.height(cl);
+                for (int j = 0; j < 2; ++j) {
+                    for (int i = 0; i < 2; ++i) {
+                        const Node k{cl, 2 * n.x + i, 2 * n.y + j, n.baseX, n.baseY};
+                        if (k.x >= cw || k.y >= ch)
+                            continue;
+                        const float bound = tileBound(k, tileBox, apexes, count);
+                        if (bound >= 1.0f)
+                            continue;
+                        int at = open++;
+                        for (; at > 0 && bounds[at - 1] < bound; --at) {
+                            children[at] = children[at - 1];
+                            bounds[at] = bounds[at - 1];
+                        }
+                        children[at] = k;
+                        bounds[at] = bound;
+                    }
+                }
+                for (int k = 0; k < open; ++k)
+                    stack[top++] = children[k];
+            }
         }
-        return edges.narrow(g, b, c);
+        for (int k = 0; k < count; ++k) {
+            const State& s = apexes[k];
+            out.g(s.b.x, s.b.y) = std::sqrt(finishRatio(edges.narrow(g, s.b, s.c)));
+        }
     }
 
 private:
@@ -211,25 +250,40 @@ private:
         return b.x + ox >= 0 && b.x + ox < g.cellsX && b.y + oy >= 0 && b.y + oy < g.cellsY;
     }
 
-    // A lower bound of every cell bound under the node, squared (>= c^2: skip it). Squares
-    // avoid a square root per node; the comparison keeps a margin so that a node is skipped
-    // only if its bound certainly is >= c.
-    float nodeBound2(const Node& n, const Apex& b, float c) const {
+    // Whether node n may hold a cell that narrows the cone of one of the apexes in `box`
+    // (texels), as a priority (smaller: more promising; >= 1: skip it). The offsets from the box
+    // to the node form the rectangle node - box, whose nearest point d and direction sectors hold
+    // for every pair; apex a needs d < c_a (m - h_a) for the node's falling maximum m. Squares
+    // avoid a square root per node, with a margin so that a node is skipped only if certainly
+    // useless.
+    template <typename States>
+    float tileBound(const Node& n, const Box& box, const States& apexes, int count) const {
         const int size = 1 << n.level;
-        const int x0 = n.baseX + n.x * size, y0 = n.baseY + n.y * size;
-        const int x1 = n.baseX + std::min((n.x + 1) * size, g.cellsX) - 1;
-        const int y1 = n.baseY + std::min((n.y + 1) * size, g.cellsY) - 1;
-        const float m =
-            p.maxFalling(n.level, n.x, n.y, sectorsOf(x0, x1 + g.spanX(), y0, y1 + g.spanY(), g));
-        const float skip = c * c * kMargin;
-        if (!(m > b.h))
-            return skip;
-        const float gx = gap(static_cast<float>(x0), static_cast<float>(x1 + g.spanX()));
-        const float gy = gap(static_cast<float>(y0), static_cast<float>(y1 + g.spanY()));
+        const int x0 = n.baseX + n.x * size - box.x1, y0 = n.baseY + n.y * size - box.y1;
+        const int x1 = n.baseX + std::min((n.x + 1) * size, g.cellsX) - 1 + g.spanX() - box.x0;
+        const int y1 = n.baseY + std::min((n.y + 1) * size, g.cellsY) - 1 + g.spanY() - box.y0;
+        const float m = p.maxFalling(n.level, n.x, n.y, sectorsOf(x0, x1, y0, y1, g));
+        float reach = 0.0f; // max over apexes of c_a (m - h_a)
+        for (int k = 0; k < count; ++k)
+            reach = std::max(reach, apexes[k].c * (m - apexes[k].b.h));
+        if (!(reach > 0.0f))
+            return kFar;
+        const float gx = gap(static_cast<float>(x0), static_cast<float>(x1));
+        const float gy = gap(static_cast<float>(y0), static_cast<float>(y1));
         if (g.repeat() && (gx >= g.field->width || gy >= g.field->height))
-            return skip;
-        const float u = gx * g.invW, v = gy * g.invH, rise = m - b.h;
-        return (u * u + v * v) / (rise * rise);
+            return kFar;
+        const float u = gx * g.invW, v = gy * g.invH;
+        return (u * u + v * v) / (reach * reach * kMargin);
+    }
+
+    static constexpr float kFar = 3.0e38f;
+
+    // Narrows an apex's cone with one cell, remembering the cell if it does.
+    template <typename State> void narrow(State& s, int ox, int oy) const {
+        const float before = s.c;
+        s.c = relaxedCell(g, s.b, ox, oy, s.c);
+        if (s.c < before)
+            *s.witness = {true, s.b.x + ox, s.b.y + oy};
     }
 
     static constexpr float kMargin = 1.0f + 1e-5f;
@@ -280,18 +334,22 @@ Result<ConeMap> bakeRelaxedConeMap(const HeightField& field, WrapMode wrap,
     const EdgeStrips strips(grid);
     const RelaxedCone cone(grid, pyramid, strips, field.maxHeight());
     ConeMap cones(ConeKind::Relaxed, field.width, field.height);
-    BakeProgress progress(control, field.height);
+    const int tileRows = (field.height + kTile - 1) / kTile;
+    BakeProgress progress(control, tileRows);
     tbb::parallel_for(
-        tbb::blocked_range<int>(0, field.height, 4), [&](const tbb::blocked_range<int>& rows) {
+        tbb::blocked_range<int>(0, tileRows, 1), [&](const tbb::blocked_range<int>& rows) {
             if (progress.stopRequested())
                 return;
-            std::vector<Witness> above(field.width), current(field.width);
-            for (int y = rows.begin(); y < rows.end(); ++y) {
-                for (int x = 0; x < field.width; ++x) {
-                    const Witness& left = x > 0 ? current[x - 1] : Witness{};
-                    cones.g(x, y) = std::sqrt(finishRatio(cone(x, y, left, above[x], current[x])));
-                }
-                std::swap(above, current);
+            // Witnesses for the row above the tile row and its own rows.
+            const int stride = field.width;
+            std::vector<Witness> witness(static_cast<std::size_t>(kTile + 1) * stride);
+            for (int r = rows.begin(); r < rows.end(); ++r) {
+                const int ty = r * kTile, th = std::min(kTile, field.height - ty);
+                for (int tx = 0; tx < field.width; tx += kTile)
+                    cone.tile(tx, ty, std::min(kTile, field.width - tx), th, witness.data(), stride,
+                              cones);
+                std::copy_n(witness.begin() + static_cast<std::ptrdiff_t>(th) * stride, stride,
+                            witness.begin());
             }
             progress.advance(rows.size());
         });

@@ -54,8 +54,8 @@ void RelaxedConeMapTest::fastMatchesRingScan_data() {
 }
 
 // The pyramid search finds the ring scan's cones (the per-cell bound's branch and bound stops at
-// a 1% tolerance that depends on the order cells are met in, so the two agree to that), and
-// relaxed cones are never narrower than the conservative ones.
+// a 3% tolerance that depends on the order cells are met in, so the two agree to that), and
+// relaxed cones are never narrower than the conservative ones (the oracle's within that 3%).
 void RelaxedConeMapTest::fastMatchesRingScan() {
     QFETCH(int, index);
     QFETCH(int, wrap);
@@ -71,12 +71,12 @@ void RelaxedConeMapTest::fastMatchesRingScan() {
     int equal = 0;
     for (std::size_t i = 0; i < ring.sqrtRatio.size(); ++i) {
         const double f = fast->sqrtRatio[i], r = ring.sqrtRatio[i];
-        QVERIFY2(std::abs(f * f - r * r) <= 0.01 * r * r,
+        QVERIFY2(std::abs(f * f - r * r) <= 0.03 * r * r,
                  qPrintable(QString("texel %1: %2 vs %3").arg(i).arg(f).arg(r)));
         equal += f == r;
         QVERIFY(fast->sqrtRatio[i] >= quick.sqrtRatio[i]);
         QVERIFY(f * f >=
-                0.99 * brute.ratio(static_cast<int>(i % k.width), static_cast<int>(i / k.width)));
+                0.97 * brute.ratio(static_cast<int>(i % k.width), static_cast<int>(i / k.width)));
     }
     QVERIFY(equal >= static_cast<int>(ring.sqrtRatio.size()) * 95 / 100);
 }
