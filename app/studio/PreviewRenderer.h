@@ -23,8 +23,9 @@ public:
     // Draws into framebuffer `fbo` of `pixels` device pixels; returns the frame time in ms
     // (steady clock around the draw and glFinish).
     Result<double> draw(const PreviewScene& scene, QSize pixels, unsigned fbo);
-    // Fetches per pixel and the error against `exact` over the view's pixels (at a reduced
-    // resolution); also makes the heat map.
+    // Fetches per pixel and the error against `exact`, rendered at the view's own resolution (the
+    // marching techniques' height level follows each pixel's footprint): over every pixel when
+    // the heat map is on (and makes it), else over a stratified sample of boxes of the view.
     Result<PreviewStats> measure(const PreviewScene& scene, QSize pixels, double frameMs);
     QImage heatMap() const { return m_heatMap; }
     std::optional<float> uniformValue(const std::string& name);

@@ -5,12 +5,32 @@
 #include "MainWindow.h"
 #include "Screenshot.h"
 #include "StudioOptions.h"
+#include "Viewport.h"
+#include "ViewportGrid.h"
 
 #include <QApplication>
 #include <QIcon>
+#include <QRegularExpression>
 #include <cstdio>
 
 namespace px::studio {
+
+namespace {
+
+// Each shown viewport's figures, one line each, as under the views.
+QString viewportFigures(MainWindow& window) {
+    QString text;
+    ViewportGrid* grid = window.viewports();
+    for (int i = 0; i < grid->layoutCount(); ++i) {
+        QString line = grid->viewport(i)->statsText();
+        line.replace(QStringLiteral("<br>"), QStringLiteral(" · "));
+        line.remove(QRegularExpression(QStringLiteral("<[^>]*>")));
+        text += QStringLiteral("viewport %1: %2\n").arg(i + 1).arg(line);
+    }
+    return text;
+}
+
+} // namespace
 
 int runStudio(int argc, char** argv) {
     setDefaultSurfaceFormat();
@@ -84,6 +104,7 @@ int runStudio(int argc, char** argv) {
         }
         std::printf("wrote %s (%dx%d pixels)\n", qPrintable(options->screenshot), pixels.width(),
                     pixels.height());
+        std::fputs(qPrintable(viewportFigures(window)), stdout);
         return 0;
     }
     window.restoreLayout();
