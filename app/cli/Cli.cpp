@@ -32,6 +32,7 @@ int run(int argc, char** argv) {
     add(addSampleCommand);
     add(addTraceCommand);
     add(addShaderCommand);
+    add(addRenderCommand);
     add(addExportCommand);
     add(addBenchCommand);
     add(addStabilityCommand);

@@ -186,7 +186,9 @@ Result<Object> uploadRg32f(int width, int height, const std::vector<float>& texe
 }
 
 void setFilteredSampling(const Object& texture, WrapMode wrap) {
-    static const bool anisotropy = anisotropyAvailable();
+    // llvmpipe's anisotropic filter (Mesa 22) spends seconds per pixel on extreme footprints such
+    // as a sphere's poles: minutes per frame. Software renderers filter trilinearly.
+    static const bool anisotropy = anisotropyAvailable() && !currentGlInfo().software();
     const GLint mode = wrap == WrapMode::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
     glBindTexture(GL_TEXTURE_2D, texture.id());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, mode);

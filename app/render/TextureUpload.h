@@ -38,8 +38,8 @@ Result<Object> uploadMaxMipAtlas(const MaxMipPyramid& pyramid, std::vector<int>&
 // RG32F from two floats per texel, level 0 only.
 Result<Object> uploadRg32f(int width, int height, const std::vector<float>& texels);
 
-// Sampler state for filtered maps: wrap as the material says, trilinear, anisotropic where the
-// GL offers it.
+// Sampler state for filtered maps: wrap as the material says, trilinear, 8x anisotropic where the
+// GL offers it and is not a software renderer.
 void setFilteredSampling(const Object& texture, WrapMode wrap);
 
 } // namespace px::gl

@@ -9,11 +9,16 @@
 // Q: the uv offset per unit of normalised height the light ray rises, s * l.xy / l.z for a light
 // direction l (towards the light, tangent space, l.z > 0). softness in [0, 1]: 0 is a point light
 // (hard shadows), 1 a light 0.5 rad (about 29 degrees) wide. Returns the visible fraction in [0, 1].
+// Fetches: 1 + up to pxMinLayers..pxMaxLayers.
 
 float pxSoftShadow(vec2 uv, float t, vec2 Q, float softness) {
-    float z0 = 1.0f - t;
     float top = pxHeightMax;
-    if (z0 >= top || pxScale <= 0.0f)
+    if (1.0f - t >= top || pxScale <= 0.0f)
+        return 1.0f;
+    // Start on the surface itself: an approximate hit (steep, pom...) may lie a little below it,
+    // and the surface just above would shadow it (acne). One fetch.
+    float z0 = max(1.0f - t, pxHeight(uv));
+    if (z0 >= top)
         return 1.0f;
     float run = length(Q) / pxScale; // uv travelled per unit of height, over s: tan of the polar angle
     float cosL = inversesqrt(1.0f + run * run);

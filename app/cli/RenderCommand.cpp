@@ -1,0 +1,294 @@
+// parallax-cli render: one frame of a material on a preview mesh, headless (EGL), as an image.
+
+#include "Cli.h"
+#include "CommonOptions.h"
+#include "HeadlessContext.h"
+#include "Renderer.h"
+#include "parallax/image/ImageFile.h"
+#include "parallax/material/MaterialFile.h"
+#include "parallax/shader/VariantKey.h"
+#include "parallax/trace/Tracer.h"
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+namespace px::cli {
+
+namespace {
+
+struct RenderOptions {
+    std::string material;
+    HeightOptions height;
+    std::string albedo;
+    std::string normal;
+    std::optional<float> scale;
+    std::optional<std::string> technique;
+    std::optional<int> minLayers, maxLayers, binarySteps, secantSteps, maxSteps;
+    std::optional<std::string> normalSource;
+    std::string normalGreen = "opengl";
+    std::optional<std::string> lighting;
+    bool shadow = false;
+    std::optional<float> softness;
+    std::optional<float> tiling;
+    std::string mesh = "plane";
+    bool derivativeTbn = false;
+    std::string size = "512x512";
+    std::string light = "135,40";
+    std::string camera;
+    std::string background = "0,0,0,0";
+    std::string out;
+};
+
+// "A,B,C" into exactly `n` finite numbers, or a sentence about `what`.
+Result<std::vector<float>> numbers(const std::string& text, std::size_t n,
+                                   const std::string& what) {
+    std::vector<float> values;
+    std::stringstream in(text);
+    for (std::string part; std::getline(in, part, ',');) {
+        try {
+            std::size_t used = 0;
+            const float v = std::stof(part, &used);
+            if (used != part.size() || !std::isfinite(v))
+                throw std::invalid_argument(part);
+            values.push_back(v);
+        } catch (const std::exception&) {
+            return Error{what + " \"" + text + "\" is not " + std::to_string(n) +
+                         " numbers separated by commas"};
+        }
+    }
+    if (values.size() != n)
+        return Error{what + " \"" + text + "\" is not " + std::to_string(n) +
+                     " numbers separated by commas"};
+    return values;
+}
+
+Result<glm::ivec2> parseSize(const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    std::istringstream in(text);
+    if (in >> w) {
+        if (!(in >> x)) {
+            h = w; // "512": square
+        } else if (x != 'x' || !(in >> h) || (in >> extra)) {
+            w = 0;
+        }
+    }
+    if (w < 1 || h < 1 || w > 16384 || h > 16384)
+        return Error{"--size \"" + text + "\" is not WIDTHxHEIGHT with sides 1 to 16384"};
+    return glm::ivec2(w, h);
+}
+
+// Default orbit distance: the mesh fills about two thirds of the frame.
+float defaultDistance(MeshKind mesh) {
+    switch (mesh) {
+    case MeshKind::Plane:
+        return 3.6f;
+    case MeshKind::Cube:
+        return 4.0f;
+    case MeshKind::Sphere:
+        return 3.6f;
+    case MeshKind::Cylinder:
+        return 3.8f;
+    }
+    return 3.6f;
+}
+
+Result<Material> materialFrom(const RenderOptions& o, MaterialAssets& assets) {
+    Material m;
+    if (!o.material.empty()) {
+        Result<Material> loaded = loadMaterial(o.material);
+        if (!loaded)
+            return loaded.error();
+        m = *loaded;
+    }
+    if (o.technique && *parseTechnique(*o.technique) != m.technique) {
+        // Another technique than the material's: its own default parameters.
+        m.technique = *parseTechnique(*o.technique);
+        m.params = info(m.technique).defaults;
+    }
+    if (o.minLayers)
+        m.params.minLayers = *o.minLayers;
+    if (o.maxLayers)
+        m.params.maxLayers = *o.maxLayers;
+    if (o.binarySteps)
+        m.params.binarySteps = *o.binarySteps;
+    if (o.secantSteps)
+        m.params.secantSteps = *o.secantSteps;
+    if (o.maxSteps)
+        m.params.maxSteps = *o.maxSteps;
+    if (Status s = validate(m.params); !s)
+        return s.error();
+    if (o.scale)
+        m.heightScale = *o.scale;
+    if (o.normalSource)
+        m.normalSource = *shader::parseNormalSource(*o.normalSource);
+    else if (o.material.empty() && !o.normal.empty())
+        m.normalSource = NormalSource::Map;
+    m.normalGreen = o.normalGreen == "directx" ? NormalGreen::DirectX : NormalGreen::OpenGL;
+    if (o.lighting)
+        m.lighting = *shader::parseLightingModel(*o.lighting);
+    if (o.shadow)
+        m.selfShadow = true;
+    if (o.softness)
+        m.shadowSoftness = *o.softness;
+    if (o.tiling)
+        m.tiling = *o.tiling;
+
+    if (!o.material.empty()) {
+        // Only the maps this view reads: no cone map unless cone/relaxed-cone asks for one.
+        Result<MaterialAssets> loaded = loadMaterialAssets(m, o.material, mapsUsed(m));
+        if (!loaded)
+            return loaded.error();
+        assets = std::move(*loaded);
+        return m;
+    }
+    m.wrap = o.height.wrapMode();
+    m.maps.height = o.height.file;
+    Result<HeightField> field = o.height.load();
+    if (!field)
+        return field.error();
+    assets.height = std::move(*field);
+    if (!o.albedo.empty()) {
+        Result<Image> albedo = readImage(o.albedo);
+        if (!albedo)
+            return albedo.error();
+        assets.albedo = std::move(*albedo);
+        m.maps.albedo = o.albedo;
+    }
+    if (!o.normal.empty()) {
+        Result<Image> normal = readImage(o.normal);
+        if (!normal)
+            return normal.error();
+        if (normal->channels < 3)
+            return Error{fileError(o.normal, "a normal map needs 3 channels, this has " +
+                                                 std::to_string(normal->channels))};
+        assets.normal = std::move(*normal);
+        m.maps.normal = o.normal;
+    }
+    return m;
+}
+
+int runRender(const RenderOptions& o) {
+    if (o.material.empty() && o.height.file.empty())
+        return fail("give --material FILE.json or --height FILE");
+    Result<glm::ivec2> size = parseSize(o.size);
+    if (!size)
+        return fail(size.error().message);
+    Result<std::vector<float>> light = numbers(o.light, 2, "--light");
+    if (!light)
+        return fail(light.error().message);
+    Result<std::vector<float>> background = numbers(o.background, 4, "--background");
+    if (!background)
+        return fail(background.error().message);
+    const MeshKind mesh = *parseMeshKind(o.mesh);
+    OrbitCamera camera;
+    camera.distance = defaultDistance(mesh);
+    if (!o.camera.empty()) {
+        Result<std::vector<float>> c = numbers(o.camera, 3, "--camera");
+        if (!c)
+            return fail(c.error().message);
+        if ((*c)[2] <= 0.0f)
+            return fail("--camera: the distance must be positive");
+        camera.azimuthDeg = (*c)[0];
+        camera.elevationDeg = (*c)[1];
+        camera.distance = (*c)[2];
+    }
+    if (!extensionSupports(o.out, PixelFormat::UInt8))
+        return fail(
+            fileError(o.out, "cannot hold an 8-bit image (use .png, .tif, .jpg, .bmp or .tga)")
+                .message);
+
+    MaterialAssets assets;
+    Result<Material> material = materialFrom(o, assets);
+    if (!material)
+        return fail(material.error().message);
+
+    Result<std::unique_ptr<HeadlessContext>> context = HeadlessContext::create();
+    if (!context)
+        return fail(context.error().message);
+    Result<std::unique_ptr<Renderer>> renderer = Renderer::create();
+    if (!renderer)
+        return fail(renderer.error().message);
+    Result<std::unique_ptr<GpuMaterial>> gpu = GpuMaterial::create(assets, material->wrap);
+    if (!gpu)
+        return fail(gpu.error().message);
+
+    DirectionalLight sun;
+    sun.azimuthDeg = (*light)[0];
+    sun.elevationDeg = (*light)[1];
+    DrawOptions options;
+    options.mesh = mesh;
+    options.tbn = o.derivativeTbn ? TbnSource::Derivatives : TbnSource::VertexTangents;
+    options.background = {(*background)[0], (*background)[1], (*background)[2], (*background)[3]};
+    Result<Image> image = (*renderer)->renderImage(**gpu, *material, camera, sun, options, *size);
+    if (!image)
+        return fail(image.error().message);
+    ImageWriteOptions write;
+    write.format = PixelFormat::UInt8;
+    write.srgb = true;
+    if (Status s = writeImage(o.out, *image, write); !s)
+        return fail(s.error().message);
+    return 0;
+}
+
+} // namespace
+
+Action addRenderCommand(CLI::App& app) {
+    auto o = std::make_shared<RenderOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "render", "Render a material on a preview mesh without a display (OpenGL 4.3 through EGL)");
+    auto* material = cmd->add_option("--material", o->material, "Material file (.json)");
+    o->height.addTo(*cmd, false);
+    auto* height = cmd->get_option("--height");
+    material->excludes(height);
+    cmd->add_option("--albedo", o->albedo, "Albedo map (sRGB), with --height")->excludes(material);
+    cmd->add_option("--normal", o->normal, "Tangent-space normal map, with --height")
+        ->excludes(material);
+    cmd->add_option("--normal-green", o->normalGreen,
+                    "Green of the normal map: opengl (Y+) or directx (Y-)")
+        ->check(CLI::IsMember({"opengl", "directx"}));
+    cmd->add_option("--scale", o->scale, "Height scale s in uv units")
+        ->check(CLI::Range(0.0f, 100.0f));
+    std::vector<std::string> techniques;
+    for (const TechniqueInfo& t : allTechniques())
+        techniques.emplace_back(t.name);
+    cmd->add_option("--technique", o->technique, "Technique (default: the material's, else pom)")
+        ->check(CLI::IsMember(techniques));
+    cmd->add_option("--min-layers", o->minLayers, "Layers looking straight down")
+        ->check(CLI::Range(1, kMaxLayersLimit));
+    cmd->add_option("--max-layers", o->maxLayers, "Layers at grazing angles")
+        ->check(CLI::Range(1, kMaxLayersLimit));
+    cmd->add_option("--binary-steps", o->binarySteps, "Binary search steps")
+        ->check(CLI::Range(0, kMaxRefineLimit));
+    cmd->add_option("--secant-steps", o->secantSteps, "Secant steps")
+        ->check(CLI::Range(0, kMaxRefineLimit));
+    cmd->add_option("--max-steps", o->maxSteps, "Cap on cone steps, cells or pyramid nodes")
+        ->check(CLI::Range(1, kMaxStepsLimit));
+    cmd->add_option("--normal-source", o->normalSource,
+                    "Shading normals: none, map, central, sobel")
+        ->check(CLI::IsMember({"none", "map", "central", "sobel"}));
+    cmd->add_option("--lighting", o->lighting, "blinn-phong or metallic-roughness")
+        ->check(CLI::IsMember({"blinn-phong", "metallic-roughness"}));
+    cmd->add_flag("--shadow", o->shadow, "Soft self-shadowing towards the light");
+    cmd->add_option("--softness", o->softness, "Shadow softness, 0 (hard) to 1")
+        ->check(CLI::Range(0.0f, 1.0f));
+    cmd->add_option("--tiling", o->tiling, "Texture repeats across the mesh")
+        ->check(CLI::Range(0.001f, 1000.0f));
+    std::vector<std::string> meshes(meshKindNames().begin(), meshKindNames().end());
+    cmd->add_option("--mesh", o->mesh, "plane, cube, sphere or cylinder")
+        ->check(CLI::IsMember(meshes));
+    cmd->add_flag("--derivative-tbn", o->derivativeTbn,
+                  "Tangent frame from screen-space derivatives");
+    cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (or one number: square)");
+    cmd->add_option("--light", o->light, "Light direction AZIMUTH,ELEVATION in degrees");
+    cmd->add_option("--camera", o->camera,
+                    "Orbit camera AZIMUTH,ELEVATION,DISTANCE (degrees, world units)");
+    cmd->add_option("--background", o->background,
+                    "Background R,G,B,A in [0,1] as stored (default transparent)");
+    cmd->add_option("--out", o->out, "Output image (.png)")->required();
+    return [o] { return runRender(*o); };
+}
+
+} // namespace px::cli
