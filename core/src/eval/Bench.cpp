@@ -182,8 +182,12 @@ Status BenchRun::tracePolar(double polar, BenchReport& report) {
 
             row.gpuRenderer = m_config.gpuUnavailable;
             if (m_config.gpuTimer) {
-                GpuFrameRequest request{&field,  m_config.wrap, &setting,
-                                        c.scale, polar,         m_config.azimuthDeg};
+                GpuFrameRequest request;
+                request.maps = c.map->maps(m_config.wrap);
+                request.setting = &setting;
+                request.scale = c.scale;
+                request.polarDeg = polar;
+                request.azimuthDeg = m_config.azimuthDeg;
                 Result<GpuFrameTiming> gpu = m_config.gpuTimer(request);
                 if (gpu) {
                     row.gpuMsPerFrame = gpu->msPerFrame;
@@ -269,17 +273,23 @@ Status validate(const BenchConfig& c) {
     }
     if (c.polarDeg.empty())
         return Error{"the benchmark needs at least one polar angle"};
-    for (double polar : c.polarDeg) {
+    for (std::size_t k = 0; k < c.polarDeg.size(); ++k) {
+        const double polar = c.polarDeg[k];
         if (!(polar >= 0.0 && polar < 90.0))
             return Error{"polar angle " + formatAngle(polar) + " is outside [0, 90) degrees"};
+        if (std::count(c.polarDeg.begin(), c.polarDeg.begin() + k, polar) > 0)
+            return Error{"polar angle " + formatAngle(polar) + " is listed twice"};
     }
     if (!std::isfinite(c.azimuthDeg))
         return Error{"the azimuth must be a finite angle"};
     if (c.scales.empty())
         return Error{"the benchmark needs at least one height scale"};
-    for (float s : c.scales) {
+    for (std::size_t k = 0; k < c.scales.size(); ++k) {
+        const float s = c.scales[k];
         if (!(std::isfinite(s) && s >= 0.0f))
             return Error{"height scale " + formatAngle(s) + " is not a finite number >= 0"};
+        if (std::count(c.scales.begin(), c.scales.begin() + k, s) > 0)
+            return Error{"height scale " + formatAngle(s) + " is listed twice"};
     }
     if (c.rays < 1 || c.rays > 4096)
         return Error{"rays must be 1 to 4096 per side, not " + std::to_string(c.rays)};

@@ -174,7 +174,10 @@ void BenchTest::gpuTimerFillsTheColumn() {
     int requests = 0;
     config.gpuTimer = [&](const GpuFrameRequest& r) -> Result<GpuFrameTiming> {
         ++requests;
-        if (r.width != 1920 || r.height != 1080 || !r.field || !r.setting)
+        if (r.width != 1920 || r.height != 1080 || !r.maps.height || !r.setting)
+            return Error{"bad request"};
+        // The bench hands over the maps it baked: a relaxed-cone request carries its cone map.
+        if (r.setting->technique == Technique::RelaxedCone && !r.maps.relaxedCone)
             return Error{"bad request"};
         return GpuFrameTiming{2.5, "Fake GPU"};
     };
@@ -225,6 +228,12 @@ void BenchTest::invalidConfigs() {
     c = smallConfig();
     c.polarDeg = {30.0, 90.0};
     expectError(c, "polar angle 90 is outside [0, 90) degrees");
+    c = smallConfig();
+    c.polarDeg = {60.0, 30.0, 60.0};
+    expectError(c, "polar angle 60 is listed twice");
+    c = smallConfig();
+    c.scales = {0.1f, 0.1f};
+    expectError(c, "height scale 0.1 is listed twice");
     c = smallConfig();
     c.scales = {-0.1f};
     expectError(c, "height scale -0.1 is not a finite number >= 0");

@@ -13,6 +13,7 @@
 #include "parallax/eval/QualitySweep.h"
 #include "parallax/heightfield/HeightField.h"
 #include "parallax/heightfield/WrapMode.h"
+#include "parallax/trace/Tracer.h"
 
 #include <functional>
 #include <memory>
@@ -27,11 +28,11 @@ struct BenchMap {
     std::shared_ptr<const HeightField> field;
 };
 
-// What a GPU timer is asked to draw: a frame of `width` x `height` pixels, each tracing the
-// canonical direction with one technique and setting (the renderer decides the uv layout).
+// What a GPU timer is asked to time: the canonical scene at one angle with one technique and
+// setting, over as many rays as a `width` x `height` frame has pixels. `maps` holds the height
+// field and the derived maps the bench already baked (so the timer need not bake them again).
 struct GpuFrameRequest {
-    const HeightField* field = nullptr;
-    WrapMode wrap = WrapMode::Repeat;
+    TraceMaps maps;
     const BenchSetting* setting = nullptr;
     float scale = 0.0f;
     double polarDeg = 0.0;
@@ -89,8 +90,8 @@ struct BenchReport {
 };
 
 // Fails with a sentence naming the problem: no maps, an empty map, no settings, an invalid
-// parameter set, a polar angle outside [0, 90), a negative or non-finite scale, rays outside
-// [1, 4096], repeats outside [0, 100].
+// parameter set, a polar angle outside [0, 90), a negative or non-finite scale, an angle or scale
+// listed twice, rays outside [1, 4096], repeats outside [0, 100].
 Status validate(const BenchConfig& config);
 
 // Progress units: one per derived map baked, per exact reference traced, and per setting traced
