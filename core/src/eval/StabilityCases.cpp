@@ -58,8 +58,8 @@ const std::vector<CaseSpec>& specs() {
              32, 32, 0.0f, 80, 35),
         make("tiny-scale", "height scale 1e-6: rays shorter than a thousandth of a texel", Noise,
              32, 32, 1e-6f, 80, 35),
-        make("huge-scale", "height scale 10 (200 tiles deep): rays ~280 texels long", Noise, 16, 16,
-             10.0f, 60, 35),
+        make("huge-scale", "height scale 10 (relief 10 tiles deep): rays ~280 texels long", Noise,
+             16, 16, 10.0f, 60, 35),
         with(make("flat-0", "a flat map at 0: every ray ends at the bottom, t = 1", Flat, 16, 16,
                   0.1f, 80, 35),
              [](CaseSpec& c) {
