@@ -26,11 +26,27 @@ int pxFloorDiv(int a, int b) {
 int pxWrapIndex(int i, int size) {
     if (!pxWrapRepeat)
         return clamp(i, 0, size - 1);
+    if (i >= 0 && i < size)
+        return i; // inside the tile, the common case: no division
     return i - size * pxFloorDiv(i, size);
 }
 
 ivec2 pxWrapTexel(ivec2 texel) {
     return ivec2(pxWrapIndex(texel.x, pxMapSize.x), pxWrapIndex(texel.y, pxMapSize.y));
+}
+
+// The index after an already wrapped one: the same as pxWrapIndex(i + 1) for the unwrapped i,
+// without another division (GPUs and SIMD CPUs divide integers slowly).
+int pxNextIndex(int wrapped, int unwrapped, int size) {
+    if (!pxWrapRepeat)
+        return clamp(unwrapped + 1, 0, size - 1);
+    return wrapped + 1 == size ? 0 : wrapped + 1;
+}
+
+// The 2x2 footprint with top-left texel i, wrapped: (x0, x1, y0, y1).
+ivec4 pxFootprint(ivec2 i) {
+    ivec2 w = pxWrapTexel(i);
+    return ivec4(w.x, pxNextIndex(w.x, i.x, pxMapSize.x), w.y, pxNextIndex(w.y, i.y, pxMapSize.y));
 }
 
 // Bilinear weights and the top-left texel of the 2x2 footprint of a uv.
@@ -56,11 +72,11 @@ float pxHeight(vec2 uv) {
     vec2 c = pxCellCoords(uv);
     vec2 base = floor(c);
     vec2 f = c - base;
-    ivec2 i = ivec2(base);
-    float h00 = pxHeightTexel(pxWrapTexel(i));
-    float h10 = pxHeightTexel(pxWrapTexel(ivec2(i.x + 1, i.y)));
-    float h01 = pxHeightTexel(pxWrapTexel(ivec2(i.x, i.y + 1)));
-    float h11 = pxHeightTexel(pxWrapTexel(ivec2(i.x + 1, i.y + 1)));
+    ivec4 q = pxFootprint(ivec2(base));
+    float h00 = pxHeightTexel(ivec2(q.x, q.z));
+    float h10 = pxHeightTexel(ivec2(q.y, q.z));
+    float h01 = pxHeightTexel(ivec2(q.x, q.w));
+    float h11 = pxHeightTexel(ivec2(q.y, q.w));
     return pxLerp(pxLerp(h00, h10, f.x), pxLerp(h01, h11, f.x), f.y);
 }
 
@@ -71,11 +87,11 @@ vec2 pxConeSample(vec2 uv) {
     vec2 c = pxCellCoords(uv);
     vec2 base = floor(c);
     vec2 f = c - base;
-    ivec2 i = ivec2(base);
-    vec2 a = pxConeTexel(pxWrapTexel(i));
-    vec2 b = pxConeTexel(pxWrapTexel(ivec2(i.x + 1, i.y)));
-    vec2 d = pxConeTexel(pxWrapTexel(ivec2(i.x, i.y + 1)));
-    vec2 e = pxConeTexel(pxWrapTexel(ivec2(i.x + 1, i.y + 1)));
+    ivec4 q = pxFootprint(ivec2(base));
+    vec2 a = pxConeTexel(ivec2(q.x, q.z));
+    vec2 b = pxConeTexel(ivec2(q.y, q.z));
+    vec2 d = pxConeTexel(ivec2(q.x, q.w));
+    vec2 e = pxConeTexel(ivec2(q.y, q.w));
     vec2 s = pxLerp2(pxLerp2(a, b, f.x), pxLerp2(d, e, f.x), f.y);
     return vec2(s.x, s.y * s.y);
 }
@@ -83,10 +99,9 @@ vec2 pxConeSample(vec2 uv) {
 // The four corners of a cell (h00, h10, h01, h11): one gather.
 vec4 pxCellCorners(ivec2 cell) {
     pxFetches += 1;
-    return vec4(pxHeightTexel(pxWrapTexel(cell)),
-                pxHeightTexel(pxWrapTexel(ivec2(cell.x + 1, cell.y))),
-                pxHeightTexel(pxWrapTexel(ivec2(cell.x, cell.y + 1))),
-                pxHeightTexel(pxWrapTexel(ivec2(cell.x + 1, cell.y + 1))));
+    ivec4 q = pxFootprint(cell);
+    return vec4(pxHeightTexel(ivec2(q.x, q.z)), pxHeightTexel(ivec2(q.y, q.z)),
+                pxHeightTexel(ivec2(q.x, q.w)), pxHeightTexel(ivec2(q.y, q.w)));
 }
 
 // Nothing lies above the highest texel: every march may start where the ray drops to it.
