@@ -64,6 +64,10 @@ std::vector<Candidate> candidates(std::string& notes) {
         eglGetProcAddress("eglQueryDeviceStringEXT"));
     const char* forced = std::getenv("PX_EGL_PLATFORM");
     const std::string force = forced ? forced : "";
+    if (!force.empty() && force != "device" && force != "surfaceless") {
+        notes += "PX_EGL_PLATFORM is \"" + force + "\", expected device or surfaceless; ";
+        return {};
+    }
     if (!getPlatformDisplay) {
         notes += "EGL has no eglGetPlatformDisplayEXT; ";
         return {{"the default EGL display", eglGetDisplay(EGL_DEFAULT_DISPLAY)}};

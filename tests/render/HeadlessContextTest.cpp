@@ -16,6 +16,7 @@ class HeadlessContextTest : public QObject {
 private slots:
     void createsA43CoreContextWithoutDisplay();
     void requirementNamesWhatItFound();
+    void eachPlatformOnRequest();
 };
 
 void HeadlessContextTest::createsA43CoreContextWithoutDisplay() {
@@ -44,6 +45,28 @@ void HeadlessContextTest::requirementNamesWhatItFound() {
     GlInfo none;
     QVERIFY(!requireGl43(none).ok());
     QVERIFY(requireGl43(none).error().message.find("no OpenGL context") != std::string::npos);
+}
+
+// The EGL device platform is what NVIDIA machines use; Mesa offers it too (a software device),
+// so CI exercises both paths. An unknown request is refused, saying what is accepted.
+void HeadlessContextTest::eachPlatformOnRequest() {
+    QVERIFY(test::glContext());
+    for (const char* platform : {"device", "surfaceless"}) {
+        qputenv("PX_EGL_PLATFORM", platform);
+        Result<std::unique_ptr<HeadlessContext>> c = HeadlessContext::create();
+        QVERIFY2(c.ok(), c ? "" : c.error().message.c_str());
+        QVERIFY2(requireGl43((*c)->info()).ok(), (*c)->info().summary().c_str());
+        const std::string expected =
+            std::string(platform) == "device" ? "EGL device" : "surfaceless Mesa";
+        QVERIFY2((*c)->platform().rfind(expected, 0) == 0, (*c)->platform().c_str());
+    }
+    qputenv("PX_EGL_PLATFORM", "wayland");
+    Result<std::unique_ptr<HeadlessContext>> refused = HeadlessContext::create();
+    qunsetenv("PX_EGL_PLATFORM");
+    QVERIFY(!refused.ok());
+    QVERIFY2(refused.error().message.find("expected device or surfaceless") != std::string::npos,
+             refused.error().message.c_str());
+    QVERIFY(test::glContext()->makeCurrent());
 }
 
 QTEST_APPLESS_MAIN(HeadlessContextTest)
