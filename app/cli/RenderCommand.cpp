@@ -2,6 +2,7 @@
 
 #include "Cli.h"
 #include "CommonOptions.h"
+#include "FrameTimer.h"
 #include "HeadlessContext.h"
 #include "Renderer.h"
 #include "parallax/image/ImageFile.h"
@@ -10,6 +11,7 @@
 #include "parallax/trace/Tracer.h"
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -38,6 +40,7 @@ struct RenderOptions {
     std::string light = "135,40";
     std::string camera;
     std::string background = "0,0,0,0";
+    int timeFrames = 0;
     std::string out;
 };
 
@@ -230,6 +233,24 @@ int runRender(const RenderOptions& o) {
     write.srgb = true;
     if (Status s = writeImage(o.out, *image, write); !s)
         return fail(s.error().message);
+    if (o.timeFrames > 0) {
+        Result<RenderTarget> target = RenderTarget::create(*size, TargetFormat::Rgba8);
+        if (!target)
+            return fail(target.error().message);
+        target->bind();
+        Status drawn = success();
+        const FrameTiming t = px::timeFrames(
+            [&] {
+                if (drawn)
+                    drawn = (*renderer)->draw(**gpu, *material, camera, sun, options, *size);
+            },
+            o.timeFrames, 1, (*renderer)->glInfo());
+        if (!drawn)
+            return fail(drawn.error().message);
+        std::printf("%s %dx%d: median %.2f ms, min %.2f, max %.2f over %d frames (%s, %s)\n",
+                    info(material->technique).name.data(), size->x, size->y, t.medianMs, t.minMs,
+                    t.maxMs, t.frames, t.method().c_str(), (*renderer)->glInfo().renderer.c_str());
+    }
     return 0;
 }
 
@@ -287,6 +308,8 @@ Action addRenderCommand(CLI::App& app) {
                     "Orbit camera AZIMUTH,ELEVATION,DISTANCE (degrees, world units)");
     cmd->add_option("--background", o->background,
                     "Background R,G,B,A in [0,1] as stored (default transparent)");
+    cmd->add_option("--time", o->timeFrames, "Also time this many frames and print the median")
+        ->check(CLI::Range(1, 10000));
     cmd->add_option("--out", o->out, "Output image (.png)")->required();
     return [o] { return runRender(*o); };
 }
