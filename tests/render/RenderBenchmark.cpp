@@ -3,7 +3,7 @@
 // degrees from the normal. Each frame is timed alone: a steady clock around glFinish on llvmpipe,
 // a GL timer query on real GPUs (FrameTimer.h). Compilation and bakes happen before timing.
 // The table at the end gives each technique's median against `none` measured in the same run.
-//   render-bench [--benchmark_filter=512] [--benchmark_repetitions=N]
+//   render-bench [--benchmark_filter=512] [--benchmark_repetitions=N]   (N > 1: medians)
 
 #include "FrameTimer.h"
 #include "RenderTestSupport.h"
@@ -12,6 +12,7 @@
 #include <benchmark/benchmark.h>
 #include <cstdio>
 #include <map>
+#include <set>
 
 using namespace px;
 
@@ -63,13 +64,22 @@ void frame(benchmark::State& state, Technique technique, glm::ivec2 size) {
 class Collector : public benchmark::ConsoleReporter {
 public:
     std::map<std::string, double> ms;
+    std::set<std::string> medians;
     void ReportRuns(const std::vector<Run>& runs) override {
         for (const Run& r : runs) {
-            if (r.error_occurred || r.run_type != Run::RT_Iteration)
+            if (r.error_occurred)
+                continue;
+            // With --benchmark_repetitions the median of the repetitions, else the one run.
+            const bool median = r.run_type == Run::RT_Aggregate && r.aggregate_name == "median";
+            if (r.run_type != Run::RT_Iteration && !median)
                 continue;
             // "pom/512x512/min_time:0.500/manual_time" -> "pom/512x512"
             const std::string name = r.benchmark_name();
-            ms[name.substr(0, name.find('/', name.find('/') + 1))] = r.GetAdjustedRealTime();
+            const std::string key = name.substr(0, name.find('/', name.find('/') + 1));
+            if (median || !medians.count(key))
+                ms[key] = r.GetAdjustedRealTime();
+            if (median)
+                medians.insert(key);
         }
         ConsoleReporter::ReportRuns(runs);
     }
