@@ -12,7 +12,7 @@ packages=(
   libglm-dev libopenimageio-dev openimageio-tools
   nlohmann-json3-dev libcli11-dev libtbb-dev libbenchmark-dev
   libplplot-dev
-  npm desktop-file-utils appstream
+  desktop-file-utils appstream
   xvfb xauth fonts-dejavu-core
   libgl1-mesa-dri libegl1 libegl-dev libgles-dev mesa-utils glslang-tools
 )
@@ -21,6 +21,9 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# npm is needed as a command, not as Debian's package: a machine with NodeSource's nodejs already has
+# it, and Debian's npm conflicts with that nodejs.
+command -v npm >/dev/null || missing+=(npm)
 if [ ${#missing[@]} -gt 0 ]; then
   echo "Installing: ${missing[*]}"
   sudo=""

@@ -32,7 +32,7 @@ std::string csvField(const std::string& text) {
 }
 
 const char* resultWord(const StabilityRow& r) {
-    return r.passed ? "pass" : (r.knownIssue.empty() ? "FAIL" : "KNOWN");
+    return r.passed ? "pass" : "FAIL";
 }
 
 std::string stabilityCsv(const std::vector<StabilityRow>& rows) {
@@ -71,22 +71,18 @@ int runStability(const StabilityOptionsCli& o) {
     if (!rows)
         return fail(rows.error().message);
 
-    int failed = 0, known = 0;
+    int failed = 0;
     std::printf("%-24s %-13s %-6s %s\n", "case", "technique", "result", "figure checked");
     for (const StabilityRow& r : *rows) {
         std::string note;
         if (!r.passed)
-            note = "  <- " + r.failure +
-                   (r.knownIssue.empty() ? "" : " (known issue: " + r.knownIssue + ")");
-        else if (!r.knownIssue.empty())
-            note = "  (listed as a known issue but passes now: remove it from the list)";
+            note = "  <- " + r.failure;
         std::printf("%-24s %-13s %-6s %s%s\n", r.caseName.c_str(), r.technique.c_str(),
                     resultWord(r), r.figure.c_str(), note.c_str());
-        failed += r.passed || !r.knownIssue.empty() ? 0 : 1;
-        known += !r.passed && !r.knownIssue.empty() ? 1 : 0;
+        failed += r.passed ? 0 : 1;
     }
-    std::printf("%zu checks: %zu passed, %d failed, %d known failures\n", rows->size(),
-                rows->size() - failed - known, failed, known);
+    std::printf("%zu checks: %zu passed, %d failed\n", rows->size(), rows->size() - failed,
+                failed);
     if (!o.csv.empty()) {
         if (Status s = writeTextFile(o.csv, stabilityCsv(*rows)); !s)
             return fail(s.error().message);

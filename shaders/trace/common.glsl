@@ -148,10 +148,10 @@ float pxFirstRoot(float A, float B, float C, float sMax) {
     return (best >= 0.0f && best <= sMax) ? best : -1.0f;
 }
 
-// The exact first hit of the ray with the bilinear patch of `cell` for t in [ta, tb], or -1.
-// X0, dXY: cell-space position at t = 0 and its derivative (cells per unit t).
-float pxSolveCell(ivec2 cell, vec2 X0, vec2 dXY, float ta, float tb) {
-    vec4 h = pxCellCorners(cell);
+// The exact first hit of the ray with the bilinear patch of `cell` (corner heights h00, h10, h01,
+// h11) for t in [ta, tb], or -1. X0, dXY: cell-space position at t = 0 and its derivative (cells
+// per unit t).
+float pxSolvePatch(vec4 h, ivec2 cell, vec2 X0, vec2 dXY, float ta, float tb) {
     float ax = X0.x + dXY.x * ta - float(cell.x);
     float ay = X0.y + dXY.y * ta - float(cell.y);
     float k = h.x - h.y - h.z + h.w;
@@ -166,6 +166,11 @@ float pxSolveCell(ivec2 cell, vec2 X0, vec2 dXY, float ta, float tb) {
     return s >= 0.0f ? ta + s : -1.0f;
 }
 
+// The same, reading the cell's corners (one fetch).
+float pxSolveCell(ivec2 cell, vec2 X0, vec2 dXY, float ta, float tb) {
+    return pxSolvePatch(pxCellCorners(cell), cell, X0, dXY, ta, tb);
+}
+
 // The cell the ray occupies just after t: on a cell border, the one it is entering.
 int pxCellAlong(float X, float dX) {
     return dX >= 0.0f ? int(floor(X)) : int(ceil(X)) - 1;
@@ -178,6 +183,18 @@ float pxBorderT(int cell, float X0, float dX) {
     if (dX < 0.0f)
         return (float(cell) - X0) / dX;
     return PX_BIG;
+}
+
+// The cell the ray occupies just after t. Rounding can put a point that has just crossed a border
+// back in the cell it left, which would stall a march there: step on past any border already
+// behind t (one step per axis is enough, the rounding is far below a cell).
+ivec2 pxCellAt(vec2 X0, vec2 dXY, float t) {
+    ivec2 cell = ivec2(pxCellAlong(X0.x + dXY.x * t, dXY.x), pxCellAlong(X0.y + dXY.y * t, dXY.y));
+    if (pxBorderT(cell.x, X0.x, dXY.x) <= t)
+        cell.x += dXY.x > 0.0f ? 1 : -1;
+    if (pxBorderT(cell.y, X0.y, dXY.y) <= t)
+        cell.y += dXY.y > 0.0f ? 1 : -1;
+    return cell;
 }
 
 // Looking straight down (or with s = 0) every technique reduces to one fetch: t = 1 - h(uv0).

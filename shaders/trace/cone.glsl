@@ -1,8 +1,9 @@
-// Cone stepping, shared by `cone` (Dummer 2006: conservative cones) and `relaxed-cone`
-// (Policarpo & Oliveira, GPU Gems 3 ch. 18: a ray may enter the solid once, then binary search).
-// The step inside a cone is dt = c (z - h) / (c + |P|). Where that would not leave the current
-// cell, the cell is solved exactly instead (CONE_MAPS.md "cell max tracing"): zero cones cannot
-// stall the march and features smaller than a cell are not stepped over.
+// Relaxed cone stepping (Policarpo & Oliveira, GPU Gems 3 ch. 18): the cone sampled at the ray's
+// position, interpolated between texels, may let the ray enter the solid once; `relaxed-cone`
+// then binary-searches the bracket. The step inside a cone is dt = c (z - h) / (c + |P|). Where
+// that would not leave the current cell, the cell is solved exactly instead (CONE_MAPS.md "cell
+// max tracing"): zero cones cannot stall the march and features smaller than a cell are not
+// stepped over. (`cone` steps with its corners' cones instead: cone_conservative.glsl.)
 
 struct PxConeState {
     float tPrev; // last position known above the surface
@@ -29,8 +30,7 @@ PxConeState pxConeMarch(vec2 uv0, vec2 P) {
         }
         float spread = hc.y + lenP; // 0 only for a zero cone seen straight down
         float coneStep = spread > 0.0f ? hc.y * (z - hc.x) / spread : 0.0f;
-        ivec2 cell = ivec2(pxCellAlong(X0.x + dXY.x * s.t, dXY.x),
-                           pxCellAlong(X0.y + dXY.y * s.t, dXY.y));
+        ivec2 cell = pxCellAt(X0, dXY, s.t);
         float tCell = min(min(pxBorderT(cell.x, X0.x, dXY.x), pxBorderT(cell.y, X0.y, dXY.y)), 1.0f);
         s.tPrev = s.t;
         if (s.t + coneStep < tCell) {

@@ -1,15 +1,72 @@
-// `cone`: conservative cone stepping. A sample found at or below the surface means the last step
-// overshot (possible only where interpolated cones are wider than the true ones): the bracket is
-// then walked cell by cell, exactly. If the step cap runs out the ray stops short (undershoot).
+// `cone`: conservative cone stepping (Dummer 2006) that never steps through the surface.
+// A cone interpolated between texels is no cone of the surface: at a needle's tip a grazing ray
+// stepped by it goes straight through. The cones baked at the four corners of the ray's cell are
+// (CONVENTIONS §4: no point of the bilinear surface inside them), so the ray steps as far as it
+// stays inside any one of them. Where that does not leave the cell, the cell is solved exactly.
+// The hit is therefore the exact one unless the step cap runs out (then the ray stops short).
+
+struct PxConeCorners {
+    vec4 h; // heights h00, h10, h01, h11
+    vec4 c; // cone ratios, same order
+};
+
+// The four corner texels of a cell in the cone map: one gather.
+PxConeCorners pxConeCorners(ivec2 cell) {
+    pxFetches += 1;
+    ivec4 q = pxFootprint(cell);
+    vec2 a = pxConeTexel(ivec2(q.x, q.z));
+    vec2 b = pxConeTexel(ivec2(q.y, q.z));
+    vec2 d = pxConeTexel(ivec2(q.x, q.w));
+    vec2 e = pxConeTexel(ivec2(q.y, q.w));
+    PxConeCorners k;
+    k.h = vec4(a.x, b.x, d.x, e.x);
+    k.c = vec4(a.y * a.y, b.y * b.y, d.y * d.y, e.y * e.y);
+    return k;
+}
+
+// How far in t a ray at `uv`, height z, stays inside the upward cone with apex (apex, h) and ratio
+// c: |uv + P s - apex| <= c (z - s - h). The cone is convex, so that is up to its first exit, a
+// root of (|P|^2 - c^2) s^2 + 2 (d.P + c A) s + |d|^2 - A^2 with A = c (z - h). 0 if not inside.
+float pxConeExit(vec2 apex, float h, float c, vec2 uv, vec2 P, float z) {
+    float A = c * (z - h);
+    vec2 d = uv - apex;
+    float k = dot(d, d) - A * A;
+    if (!(A > 0.0f) || k >= 0.0f)
+        return 0.0f;
+    float s = pxFirstRoot(dot(P, P) - c * c, 2.0f * (dot(d, P) + c * A), k, z - h);
+    return s >= 0.0f ? s : z - h; // inside all the way down to the apex's height
+}
 
 float pxTraceCone(vec2 uv0, vec2 P) {
-    PxConeState s = pxConeMarch(uv0, P);
-    if (s.hit >= 0.0f)
-        return s.hit;
-    if (!s.below || s.t <= s.tPrev)
-        return s.t;
     vec2 X0 = pxCellCoords(uv0);
     vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
-    vec2 r = pxWalkCells(X0, dXY, s.tPrev, s.t, pxMaxSteps);
-    return r.x >= 0.0f ? r.x : s.t;
+    float t = pxStartT();
+    for (int i = 0; i < pxMaxSteps; ++i) {
+        ivec2 cell = pxCellAt(X0, dXY, t);
+        float tCell = min(min(pxBorderT(cell.x, X0.x, dXY.x), pxBorderT(cell.y, X0.y, dXY.y)), 1.0f);
+        PxConeCorners k = pxConeCorners(cell);
+        vec2 uv = uv0 + P * t;
+        float step = 0.0f;
+        for (int j = 0; j < 4; ++j) {
+            ivec2 texel = ivec2(cell.x + (j & 1), cell.y + (j >> 1));
+            // With clamp, texels past the edge repeat the edge's data at another place: no cone.
+            bool inside = texel.x >= 0 && texel.y >= 0 && texel.x < pxMapSize.x && texel.y < pxMapSize.y;
+            if (pxWrapRepeat || inside) {
+                vec2 apex = vec2((float(texel.x) + 0.5f) / float(pxMapSize.x),
+                                 (float(texel.y) + 0.5f) / float(pxMapSize.y));
+                step = max(step, pxConeExit(apex, k.h[j], k.c[j], uv, P, 1.0f - t));
+            }
+        }
+        if (t + step < tCell) {
+            float root = pxSolvePatch(k.h, cell, X0, dXY, t, tCell);
+            if (root >= 0.0f)
+                return root;
+            t = max(t, tCell);
+        } else {
+            t = t + step;
+        }
+        if (t >= 1.0f)
+            return 1.0f; // f(1) >= 0: the bottom is always solid
+    }
+    return t; // the cap ran out: the ray is still above the surface here
 }

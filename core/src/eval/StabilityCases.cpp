@@ -124,21 +124,6 @@ constexpr std::array kRules{
     BoundRule{Technique::Exact, "the reference: within 0.001 texel of the closed forms"},
 };
 
-// Rows that fail today for a reason found and reported, not yet fixed: they still print as
-// failures (KNOWN), but do not fail the suite. A known issue whose row passes is reported too,
-// so the entry gets removed.
-struct KnownIssue {
-    std::string_view caseName;
-    Technique technique;
-    std::string_view issue;
-};
-constexpr std::array kKnownIssues{
-    KnownIssue{"needles", Technique::Cone,
-               "the march takes a cone step out of a cell without solving that cell, and the "
-               "interpolated 3x3-minimum cone can be wider than the true one at the sample: it "
-               "steps through needle tips (shaders/trace/cone.glsl, pxConeMarch)"},
-};
-
 std::string texels(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", value);
@@ -149,14 +134,6 @@ std::string texels(double value) {
 
 std::span<const CaseSpec> caseSpecs() {
     return specs();
-}
-
-std::string_view knownIssue(const CaseSpec& spec, Technique t) {
-    for (const KnownIssue& k : kKnownIssues) {
-        if (k.caseName == spec.info.name && k.technique == t)
-            return k.issue;
-    }
-    return {};
 }
 
 ErrorBound boundFor(const CaseSpec& spec, Technique t, const TraceParams& params,
@@ -237,30 +214,5 @@ std::span<const BoundRule> boundRules() {
     return stability::kRules;
 }
 
-std::int64_t fetchCap(Technique t, const TraceParams& p) {
-    switch (t) {
-    case Technique::None:
-    case Technique::Normal:
-        return 0;
-    case Technique::Offset:
-        return 1;
-    case Technique::Steep:
-    case Technique::Pom:
-        return p.maxLayers + 1; // layers 0..n, n <= maxLayers
-    case Technique::Relief:
-        return p.maxLayers + 1 + p.binarySteps;
-    case Technique::Secant:
-        return p.maxLayers + 1 + p.secantSteps;
-    case Technique::Cone:
-        return 3LL * p.maxSteps; // a sample and a cell solve per step, then a capped cell walk
-    case Technique::RelaxedCone:
-        return 2LL * p.maxSteps + p.binarySteps;
-    case Technique::Pyramid:
-        return 2LL * p.maxSteps; // a node and a cell solve per step
-    case Technique::Exact:
-        return p.maxSteps; // one gather per cell
-    }
-    return 0;
-}
 
 } // namespace px

@@ -51,9 +51,6 @@ struct CaseGeometry {
     double cosTheta = 1.0;
 };
 
-// A reported, not yet fixed failure of this technique on this case; empty if none.
-std::string_view knownIssue(const CaseSpec& spec, Technique technique);
-
 ErrorBound boundFor(const CaseSpec& spec, Technique technique, const TraceParams& params,
                     const CaseGeometry& geometry);
 

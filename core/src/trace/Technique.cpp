@@ -58,6 +58,32 @@ std::optional<Technique> parseTechnique(std::string_view name) {
     return std::nullopt;
 }
 
+long long fetchCap(Technique t, const TraceParams& p) {
+    switch (t) {
+    case Technique::None:
+    case Technique::Normal:
+        return 0;
+    case Technique::Offset:
+        return 1;
+    case Technique::Steep:
+    case Technique::Pom:
+        return p.maxLayers + 1; // layers 0..n, n <= maxLayers
+    case Technique::Relief:
+        return p.maxLayers + 1 + p.binarySteps;
+    case Technique::Secant:
+        return p.maxLayers + 1 + p.secantSteps;
+    case Technique::Cone:
+        return p.maxSteps; // one gather of the cell's corner cones per step
+    case Technique::RelaxedCone:
+        return 2LL * p.maxSteps + p.binarySteps;
+    case Technique::Pyramid:
+        return 2LL * p.maxSteps; // a node and a cell solve per step
+    case Technique::Exact:
+        return p.maxSteps; // one gather per cell
+    }
+    return 0;
+}
+
 int refineSteps(Technique technique, const TraceParams& params) {
     const TechniqueInfo& i = info(technique);
     if (i.usesBinarySteps)

@@ -23,32 +23,6 @@ private slots:
 
 namespace {
 
-// The most fetches a technique may make for a given parameter set (its cap, stated).
-long long fetchCap(Technique t, const TraceParams& p) {
-    switch (t) {
-    case Technique::None:
-    case Technique::Normal:
-        return 0;
-    case Technique::Offset:
-        return 1;
-    case Technique::Steep:
-    case Technique::Pom:
-        return p.maxLayers + 1;
-    case Technique::Relief:
-        return p.maxLayers + 1 + p.binarySteps;
-    case Technique::Secant:
-        return p.maxLayers + 1 + p.secantSteps;
-    case Technique::Cone:
-        return 3LL * p.maxSteps; // a sample and a cell solve per step, then a capped walk
-    case Technique::RelaxedCone:
-        return 2LL * p.maxSteps + p.binarySteps;
-    case Technique::Pyramid:
-        return 2LL * p.maxSteps;
-    case Technique::Exact:
-        return p.maxSteps;
-    }
-    return 0;
-}
 
 struct Case {
     const char* name;

@@ -49,21 +49,16 @@ struct BoundRule {
 };
 std::span<const BoundRule> boundRules();
 
-// The most fetches one ray of `technique` may make with `params` (the hard caps of its loops).
-std::int64_t fetchCap(Technique technique, const TraceParams& params);
 
 struct StabilityRow {
     std::string caseName;
     std::string technique; // a technique's name, or "loader" for the input-rejection case
     bool passed = false;
-    // A failure found, reported and not yet fixed (StabilityCases.cpp lists them): the row still
-    // fails, but does not fail the suite. Set on passing rows too, so fixed issues get noticed.
-    std::string knownIssue;
     std::string figure;  // what was checked, with the measured value: "p99 0.31 <= 1.2 texels"
     std::string failure; // why it failed; empty when it passed
     ErrorBound bound;
     HitErrorStats stats;
-    std::int64_t fetchCap = 0;
+    long long fetchCap = 0;
 };
 
 struct StabilityOptions {
@@ -81,7 +76,7 @@ struct BoundCheck {
 BoundCheck checkBound(const ErrorBound& bound, std::span<const TraceResult> hits,
                       std::span<const TraceResult> reference, int width, int height);
 
-// True if every failed row is a known issue.
+// True if every row passed.
 bool suitePassed(const std::vector<StabilityRow>& rows);
 
 // Errors: an unknown case name, rays outside [1, 1024], evaluationCancelled(). Failing rows are

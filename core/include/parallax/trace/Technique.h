@@ -50,6 +50,10 @@ std::span<const TechniqueInfo> allTechniques();
 const TechniqueInfo& info(Technique technique);
 std::optional<Technique> parseTechnique(std::string_view name);
 
+// The most fetches one ray may cost with these parameters: every kernel loop is capped, and this
+// is the contract the stability tests hold them to.
+long long fetchCap(Technique technique, const TraceParams& params);
+
 // The refinement steps the kernel uses for this technique (binary or secant, else 0).
 int refineSteps(Technique technique, const TraceParams& params);
 
