@@ -1,4 +1,5 @@
 # Sources of the core's image area.
 target_sources(parallax-core PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/ExrHeaderCheck.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ImageFile.cpp
 )
