@@ -43,12 +43,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     px::Result<px::Image> image = px::readImage(path, read);
     if (!image) {
         if (image.error().message.rfind(path, 0) != 0) {
-            std::fprintf(stderr, "error without its file name: %s\n", image.error().message.c_str());
+            std::fprintf(stderr, "error without its file name: %s\n",
+                         image.error().message.c_str());
             std::abort();
         }
         return 0;
     }
-    if (image->pixels.size() != static_cast<std::size_t>(image->width) * image->height * image->channels)
+    if (image->pixels.size() !=
+        static_cast<std::size_t>(image->width) * image->height * image->channels)
         std::abort();
     for (const px::HeightChannel channel :
          {px::HeightChannel::Red, px::HeightChannel::Green, px::HeightChannel::Blue,

@@ -32,7 +32,8 @@ int main(int argc, char** argv) {
                                           std::istreambuf_iterator<char>());
             std::printf("%s\n", file.c_str());
             std::fflush(stdout);
-            LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+            LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()),
+                                   bytes.size());
             ++count;
         }
     }

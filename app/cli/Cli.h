@@ -2,7 +2,6 @@
 // parallax-cli: one CLI11 app, one subcommand per file (TraceCommand.cpp, ...).
 
 #include <CLI/CLI.hpp>
-
 #include <functional>
 #include <string>
 

@@ -81,8 +81,7 @@ int runStability(const StabilityOptionsCli& o) {
                     resultWord(r), r.figure.c_str(), note.c_str());
         failed += r.passed ? 0 : 1;
     }
-    std::printf("%zu checks: %zu passed, %d failed\n", rows->size(), rows->size() - failed,
-                failed);
+    std::printf("%zu checks: %zu passed, %d failed\n", rows->size(), rows->size() - failed, failed);
     if (!o.csv.empty()) {
         if (Status s = writeTextFile(o.csv, stabilityCsv(*rows)); !s)
             return fail(s.error().message);

@@ -66,7 +66,8 @@ int runTrace(const TraceOptions& o) {
 
     std::vector<TraceResult> results;
     if (o.gpu) {
-        Result<std::vector<TraceResult>> gpu = traceSceneHeadless(maps, technique, params, o.scale, scene);
+        Result<std::vector<TraceResult>> gpu =
+            traceSceneHeadless(maps, technique, params, o.scale, scene);
         if (!gpu)
             return fail(gpu.error().message);
         results = std::move(*gpu);
@@ -109,7 +110,8 @@ Action addTraceCommand(CLI::App& app) {
         ->check(CLI::Range(0, kMaxRefineLimit));
     cmd->add_option("--max-steps", o->maxSteps, "Cap on cone steps, cells or pyramid nodes")
         ->check(CLI::Range(1, kMaxStepsLimit));
-    cmd->add_flag("--gpu", o->gpu, "Trace on the GPU (headless OpenGL 4.3, the same kernels): same CSV");
+    cmd->add_flag("--gpu", o->gpu,
+                  "Trace on the GPU (headless OpenGL 4.3, the same kernels): same CSV");
     cmd->add_option("--out", o->out, "Output CSV (i,j,u,v,t,fetches); - for standard output")
         ->required();
     return [o] { return runTrace(*o); };

@@ -214,5 +214,4 @@ std::span<const BoundRule> boundRules() {
     return stability::kRules;
 }
 
-
 } // namespace px

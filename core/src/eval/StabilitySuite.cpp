@@ -252,8 +252,7 @@ BoundCheck checkBound(const ErrorBound& b, std::span<const TraceResult> hits,
 }
 
 bool suitePassed(const std::vector<StabilityRow>& rows) {
-    return std::all_of(rows.begin(), rows.end(),
-                       [](const StabilityRow& r) { return r.passed; });
+    return std::all_of(rows.begin(), rows.end(), [](const StabilityRow& r) { return r.passed; });
 }
 
 Result<std::vector<StabilityRow>> runStabilitySuite(const StabilityOptions& options,

@@ -27,9 +27,8 @@ void StabilitySuiteTest::everyCasePasses() {
     std::set<std::string> cases;
     for (const StabilityRow& r : *rows) {
         cases.insert(r.caseName);
-        QVERIFY2(r.passed,
-                 qPrintable(QString::fromStdString(r.caseName + " " + r.technique + ": " +
-                                                   r.failure + " (" + r.figure + ")")));
+        QVERIFY2(r.passed, qPrintable(QString::fromStdString(r.caseName + " " + r.technique + ": " +
+                                                             r.failure + " (" + r.figure + ")")));
         QVERIFY2(!r.figure.empty(), r.caseName.c_str());
         if (r.technique != "loader")
             QCOMPARE(r.stats.invalid, std::int64_t(0));

@@ -23,7 +23,6 @@ private slots:
 
 namespace {
 
-
 struct Case {
     const char* name;
     ProceduralMap map;

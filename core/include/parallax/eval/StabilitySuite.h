@@ -49,7 +49,6 @@ struct BoundRule {
 };
 std::span<const BoundRule> boundRules();
 
-
 struct StabilityRow {
     std::string caseName;
     std::string technique; // a technique's name, or "loader" for the input-rejection case
