@@ -127,6 +127,19 @@ float pxDepthGap(vec2 uv0, vec2 P, float t) {
     return gap;
 }
 
+// pxRefineSteps halvings of a bracket [lo, hi] holding one crossing (above at lo, below at hi);
+// the answer is the final bracket's midpoint.
+float pxBisect(vec2 uv0, vec2 P, float lo, float hi) {
+    for (int i = 0; i < pxRefineSteps; ++i) {
+        float mid = 0.5f * (lo + hi);
+        if (pxDepthGap(uv0, P, mid) >= 0.0f)
+            hi = mid;
+        else
+            lo = mid;
+    }
+    return 0.5f * (lo + hi);
+}
+
 // Smallest s in [0, sMax] with A s^2 + B s + C >= 0, given C < 0; -1 if none. Uses the
 // cancellation-free form of the roots: the textbook one loses the small root when 4AC << B^2.
 float pxFirstRoot(float A, float B, float C, float sMax) {

@@ -7,14 +7,5 @@ float pxTraceRelaxedCone(vec2 uv0, vec2 P) {
         return s.hit;
     if (!s.below || s.t <= s.tPrev)
         return s.t;
-    float lo = s.tPrev;
-    float hi = s.t;
-    for (int i = 0; i < pxRefineSteps; ++i) {
-        float mid = 0.5f * (lo + hi);
-        if (pxDepthGap(uv0, P, mid) >= 0.0f)
-            hi = mid;
-        else
-            lo = mid;
-    }
-    return 0.5f * (lo + hi);
+    return pxBisect(uv0, P, s.tPrev, s.t);
 }
