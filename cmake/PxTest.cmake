@@ -8,12 +8,19 @@
 # Runs parallax-cli with the arguments; EXPECT matches its output, FAIL expects a non-zero exit.
 
 set(PX_SHARED_DIR "${PROJECT_SOURCE_DIR}/../shared" CACHE PATH "The shared/ folder beside the project")
+# Sanitized code runs several times slower; the timeouts guard against hangs, not speed.
+if(PX_SANITIZE)
+  set(PX_TIMEOUT_SCALE 8)
+else()
+  set(PX_TIMEOUT_SCALE 1)
+endif()
 
 function(px_add_qtest)
   cmake_parse_arguments(T "GL" "NAME;TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 120)
   endif()
+  math(EXPR T_TIMEOUT "${T_TIMEOUT} * ${PX_TIMEOUT_SCALE}")
   add_executable(${T_NAME} ${T_SOURCES})
   target_link_libraries(${T_NAME} PRIVATE Qt6::Test parallax-test-support ${T_LIBS})
   set_target_properties(${T_NAME} PROPERTIES AUTOMOC ON)
@@ -31,6 +38,7 @@ function(px_add_cli_test)
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 120)
   endif()
+  math(EXPR T_TIMEOUT "${T_TIMEOUT} * ${PX_TIMEOUT_SCALE}")
   add_test(NAME cli.${T_NAME} COMMAND $<TARGET_FILE:parallax-cli> ${T_COMMAND}
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   set(_labels cli ${T_LABELS})
