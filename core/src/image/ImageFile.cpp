@@ -1,5 +1,6 @@
 #include "parallax/image/ImageFile.h"
 
+#include "ExrHeaderCheck.h"
 #include "parallax/io/AtomicWrite.h"
 
 #include <OpenImageIO/imageio.h>
@@ -71,6 +72,9 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
         return fileError(path, "is a folder, not an image file");
     if (std::filesystem::file_size(path, ec) == 0 && !ec)
         return fileError(path, "the file is empty (0 bytes)");
+    // Before OpenEXR, which allocates what a damaged header claims (fuzzing found 1.7 GB).
+    if (Status exr = checkExrHeader(path); !exr)
+        return exr.error();
 
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1); // material maps are not premultiplied

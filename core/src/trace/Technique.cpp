@@ -29,7 +29,7 @@ constexpr std::array kTechniques{
     TechniqueInfo{Technique::Pom,         "pom",          "Parallax occlusion mapping",      true,  true,  false, false, false, false, false, false, layered(8, 32)},
     TechniqueInfo{Technique::Relief,      "relief",       "Relief mapping (binary search)",  true,  true,  true,  false, false, false, false, false, layered(8, 32)},
     TechniqueInfo{Technique::Secant,      "secant",       "Secant refinement",               true,  true,  false, true,  false, false, false, false, layered(8, 32)},
-    TechniqueInfo{Technique::Cone,        "cone",         "Cone step mapping",               true,  false, false, false, true,  true,  false, false, capped(64)},
+    TechniqueInfo{Technique::Cone,        "cone",         "Cone step mapping",               true,  false, false, false, true,  true,  false, false, capped(128)},
     TechniqueInfo{Technique::RelaxedCone, "relaxed-cone", "Relaxed cone stepping",           true,  false, true,  false, true,  false, true,  false, capped(64, 8)},
     TechniqueInfo{Technique::Pyramid,     "pyramid",      "Pyramidal (max-mip) displacement",true,  false, false, false, true,  false, false, true,  capped(1 << 16)},
     TechniqueInfo{Technique::Exact,       "exact",        "Exact intersection (reference)",  true,  false, false, false, true,  false, false, false, capped(1 << 22)},
