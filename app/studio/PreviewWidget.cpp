@@ -33,6 +33,10 @@ PreviewWidget::PreviewWidget(QWidget* parent) : QOpenGLWidget(parent) {
 
 PreviewWidget::~PreviewWidget() {
     releaseGl();
+    // ~QOpenGLWidget destroys the context after this part of the object is gone: its
+    // aboutToBeDestroyed must not call releaseGl on a PreviewWidget that no longer exists.
+    if (QOpenGLContext* gl = context())
+        disconnect(gl, nullptr, this, nullptr);
 }
 
 void PreviewWidget::releaseGl() {
