@@ -19,12 +19,23 @@ constexpr int kLineBase = 10000; // shader files stay under 10000 lines
 // kernels); the stage's main file comes last. Unreachable items are dropped.
 const std::vector<std::string>& libraryFiles() {
     static const std::vector<std::string> files{
-        "render/bindings.glsl",    "trace/common.glsl",      "trace/walk.glsl",
-        "trace/exact.glsl",        "trace/offset.glsl",      "trace/march.glsl",
-        "trace/steep.glsl",        "trace/pom.glsl",         "trace/relief.glsl",
-        "trace/secant.glsl",       "trace/cone.glsl",        "trace/cone_conservative.glsl",
-        "trace/cone_relaxed.glsl", "trace/pyramid.glsl",     "trace/shadow.glsl",
-        "trace/normals.glsl",      "render/techniques.glsl", "render/lighting.glsl",
+        "render/bindings.glsl",
+        "trace/common.glsl",
+        "trace/walk.glsl",
+        "trace/exact.glsl",
+        "trace/offset.glsl",
+        "trace/march.glsl",
+        "trace/steep.glsl",
+        "trace/pom.glsl",
+        "trace/relief.glsl",
+        "trace/secant.glsl",
+        "trace/cone_conservative.glsl",
+        "trace/cone_relaxed.glsl",
+        "trace/pyramid.glsl",
+        "trace/shadow.glsl",
+        "trace/normals.glsl",
+        "render/techniques.glsl",
+        "render/lighting.glsl",
     };
     return files;
 }

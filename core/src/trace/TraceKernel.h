@@ -39,7 +39,6 @@ struct TraceKernel {
     float pxMaxMipNode(int level, ivec2 n) const { return pyramid->at(level, n.x, n.y); }
 
 #include "trace/common.glsl"
-#include "trace/cone.glsl"
 #include "trace/cone_conservative.glsl"
 #include "trace/cone_relaxed.glsl"
 #include "trace/exact.glsl"
