@@ -181,8 +181,10 @@ GpuMesh GpuMesh::upload(const MeshData& mesh) {
                  mesh.indices.data(), GL_STATIC_DRAW);
     auto attribute = [](GLuint index, int size, std::size_t offset) {
         glEnableVertexAttribArray(index);
-        glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, sizeof(MeshVertex),
-                              reinterpret_cast<const void*>(offset));
+        glVertexAttribPointer(
+            index, size, GL_FLOAT, GL_FALSE, sizeof(MeshVertex),
+            // GL takes a buffer offset as a pointer
+            reinterpret_cast<const void*>(offset)); // NOLINT(performance-no-int-to-ptr)
     };
     attribute(0, 3, offsetof(MeshVertex, position));
     attribute(1, 3, offsetof(MeshVertex, normal));

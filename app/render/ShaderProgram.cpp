@@ -58,7 +58,8 @@ Result<ShaderProgram> ShaderProgram::build(const GeneratedProgram& generated) {
         glGetProgramiv(p.id(), GL_INFO_LOG_LENGTH, &length);
         std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
         glGetProgramInfoLog(p.id(), length, nullptr, log.data());
-        return Error{"the shader of " + name + " does not link: " + log.c_str()};
+        log.resize(std::strlen(log.c_str()));
+        return Error{"the shader of " + name + " does not link: " + log};
     }
     GLint count = 0;
     glGetProgramiv(p.id(), GL_ACTIVE_UNIFORMS, &count);

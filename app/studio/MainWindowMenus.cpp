@@ -179,7 +179,7 @@ void MainWindow::createMenus() {
         const QString title = bakeTitle(kind);
         QAction* a = action(this, tr("Bake %1").arg(title.left(1).toUpper() + title.mid(1)), key,
                             tr("Bake a %1 from the height map in the background.").arg(title));
-        connect(a, &QAction::triggered, this, [this, kind] { startBake(kind); });
+        connect(a, &QAction::triggered, this, [this, k = kind] { startBake(k); });
         bake->addAction(a);
     }
     QAction* cancel = action(this, tr("&Cancel Bake"), QKeySequence(Qt::Key_Escape),

@@ -23,7 +23,7 @@ std::string writeGrey(const QTemporaryDir& dir, const char* name, int w, int h, 
     Image image(w, h, channels);
     for (float& p : image.pixels)
         p = value;
-    const std::string path = dir.filePath(name).toStdString();
+    std::string path = dir.filePath(name).toStdString();
     ImageWriteOptions options;
     options.format = PixelFormat::UInt16;
     if (!writeImage(path, image, options))

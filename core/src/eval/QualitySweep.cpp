@@ -95,6 +95,7 @@ std::vector<BenchSetting> qualitySweep(Technique technique) {
         points.push_back(defaults);
 
     std::vector<BenchSetting> sweep;
+    sweep.reserve(points.size());
     for (const TraceParams& p : points)
         sweep.push_back({technique, p, settingLabel(technique, p), sameParams(p, defaults)});
     return sweep;

@@ -214,7 +214,7 @@ void BenchTest::gpuFailureSaysWhy() {
 }
 
 void BenchTest::invalidConfigs() {
-    auto expectError = [](BenchConfig c, const std::string& message) {
+    auto expectError = [](const BenchConfig& c, const std::string& message) {
         Result<BenchReport> r = runBench(c);
         QVERIFY(!r.ok());
         QCOMPARE(r.error().message, message);

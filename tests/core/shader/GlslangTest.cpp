@@ -39,7 +39,7 @@ void GlslangTest::everyVariantValidates() {
     QStringList batch;
     int files = 0;
     auto flush = [&]() -> QString {
-        const QString failure = batch.isEmpty() ? QString() : validate(batch);
+        QString failure = batch.isEmpty() ? QString() : validate(batch);
         batch.clear();
         return failure;
     };

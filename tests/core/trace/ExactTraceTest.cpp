@@ -127,7 +127,7 @@ void ExactTraceTest::singleStep() {
     auto tracer = test::makeTracer(step, WrapMode::Clamp, Technique::Exact, 0.2f);
     QVERIFY(tracer.ok());
     const glm::vec2 P = parallaxVector(0.2f, 70.0, 0.0);
-    const double c = W / 2 - 1; // the wall cell, in cell coordinates
+    const double c = W / 2.0 - 1.0; // the wall cell (W is even), in cell coordinates
     for (double u0 : {0.05, 0.15, 0.25, 0.4}) {
         const double X0 = u0 * W - 0.5, dX = P.x * W;
         double expected = (1.0 - X0 + c) / (1.0 + dX); // on the wall: t = 1 - (X - c)
