@@ -1,5 +1,7 @@
 #include "CommonOptions.h"
 
+#include <functional>
+
 namespace px::cli {
 
 void HeightOptions::addTo(CLI::App& command, bool required) {
@@ -27,6 +29,61 @@ Result<HeightField> HeightOptions::load() const {
     options.normalize = normalize;
     options.allowLarge = allowLarge;
     return loadHeightField(file, options);
+}
+
+namespace {
+
+// "default: pom 8, relief 8, ..." for the techniques that read the parameter.
+std::string defaultsOf(const std::function<bool(const TechniqueInfo&)>& reads,
+                       int TraceParams::*field) {
+    std::string text;
+    for (const TechniqueInfo& t : allTechniques()) {
+        if (!reads(t))
+            continue;
+        text += (text.empty() ? " (default: " : ", ") + std::string(t.name) + " " +
+                std::to_string(t.defaults.*field);
+    }
+    return text.empty() ? text : text + ")";
+}
+
+} // namespace
+
+void QualityOptions::addTo(CLI::App& command) {
+    auto layers = [](const TechniqueInfo& t) { return t.usesLayers; };
+    command
+        .add_option("--min-layers", minLayers,
+                    "Layers looking straight down" + defaultsOf(layers, &TraceParams::minLayers))
+        ->check(CLI::Range(1, kMaxLayersLimit));
+    command
+        .add_option("--max-layers", maxLayers,
+                    "Layers at grazing angles" + defaultsOf(layers, &TraceParams::maxLayers))
+        ->check(CLI::Range(1, kMaxLayersLimit));
+    command
+        .add_option("--binary-steps", binarySteps,
+                    "Binary search steps" +
+                        defaultsOf([](const TechniqueInfo& t) { return t.usesBinarySteps; },
+                                   &TraceParams::binarySteps))
+        ->check(CLI::Range(0, kMaxRefineLimit));
+    command
+        .add_option("--secant-steps", secantSteps,
+                    "Secant steps" +
+                        defaultsOf([](const TechniqueInfo& t) { return t.usesSecantSteps; },
+                                   &TraceParams::secantSteps))
+        ->check(CLI::Range(0, kMaxRefineLimit));
+    command
+        .add_option("--max-steps", maxSteps,
+                    "Cap on cone steps, cells or pyramid nodes" +
+                        defaultsOf([](const TechniqueInfo& t) { return t.usesMaxSteps; },
+                                   &TraceParams::maxSteps))
+        ->check(CLI::Range(1, kMaxStepsLimit));
+}
+
+void QualityOptions::applyTo(TraceParams& params) const {
+    params.minLayers = minLayers.value_or(params.minLayers);
+    params.maxLayers = maxLayers.value_or(params.maxLayers);
+    params.binarySteps = binarySteps.value_or(params.binarySteps);
+    params.secantSteps = secantSteps.value_or(params.secantSteps);
+    params.maxSteps = maxSteps.value_or(params.maxSteps);
 }
 
 } // namespace px::cli

@@ -1,12 +1,15 @@
 #pragma once
-// Options several subcommands share: the height map and how to read it.
+// Options several subcommands share: the height map and how to read it, and the quality
+// parameters of the techniques.
 
 #include "parallax/Result.h"
 #include "parallax/heightfield/HeightField.h"
 #include "parallax/heightfield/HeightFieldLoader.h"
 #include "parallax/heightfield/WrapMode.h"
+#include "parallax/trace/Technique.h"
 
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 
 namespace px::cli {
@@ -23,6 +26,16 @@ struct HeightOptions {
     void addTo(CLI::App& command, bool required = true);
     WrapMode wrapMode() const;
     Result<HeightField> load() const;
+};
+
+// The parameters artists tune; each left out keeps the technique's default (the help says which).
+struct QualityOptions {
+    std::optional<int> minLayers, maxLayers, binarySteps, secantSteps, maxSteps;
+
+    // Adds --min-layers, --max-layers, --binary-steps, --secant-steps, --max-steps.
+    void addTo(CLI::App& command);
+    // Overrides the parameters given on the command line.
+    void applyTo(TraceParams& params) const;
 };
 
 } // namespace px::cli

@@ -27,7 +27,7 @@ struct RenderOptions {
     std::string normal;
     std::optional<float> scale;
     std::optional<std::string> technique;
-    std::optional<int> minLayers, maxLayers, binarySteps, secantSteps, maxSteps;
+    QualityOptions quality;
     std::optional<std::string> normalSource;
     std::string normalGreen = "opengl";
     std::optional<std::string> lighting;
@@ -111,16 +111,7 @@ Result<Material> materialFrom(const RenderOptions& o, MaterialAssets& assets) {
         m.technique = *parseTechnique(*o.technique);
         m.params = info(m.technique).defaults;
     }
-    if (o.minLayers)
-        m.params.minLayers = *o.minLayers;
-    if (o.maxLayers)
-        m.params.maxLayers = *o.maxLayers;
-    if (o.binarySteps)
-        m.params.binarySteps = *o.binarySteps;
-    if (o.secantSteps)
-        m.params.secantSteps = *o.secantSteps;
-    if (o.maxSteps)
-        m.params.maxSteps = *o.maxSteps;
+    o.quality.applyTo(m.params);
     if (Status s = validate(m.params); !s)
         return s.error();
     if (o.scale)
@@ -277,16 +268,7 @@ Action addRenderCommand(CLI::App& app) {
         techniques.emplace_back(t.name);
     cmd->add_option("--technique", o->technique, "Technique (default: the material's, else pom)")
         ->check(CLI::IsMember(techniques));
-    cmd->add_option("--min-layers", o->minLayers, "Layers looking straight down")
-        ->check(CLI::Range(1, kMaxLayersLimit));
-    cmd->add_option("--max-layers", o->maxLayers, "Layers at grazing angles")
-        ->check(CLI::Range(1, kMaxLayersLimit));
-    cmd->add_option("--binary-steps", o->binarySteps, "Binary search steps")
-        ->check(CLI::Range(0, kMaxRefineLimit));
-    cmd->add_option("--secant-steps", o->secantSteps, "Secant steps")
-        ->check(CLI::Range(0, kMaxRefineLimit));
-    cmd->add_option("--max-steps", o->maxSteps, "Cap on cone steps, cells or pyramid nodes")
-        ->check(CLI::Range(1, kMaxStepsLimit));
+    o->quality.addTo(*cmd);
     cmd->add_option("--normal-source", o->normalSource,
                     "Shading normals: none, map, central, sobel")
         ->check(CLI::IsMember({"none", "map", "central", "sobel"}));

@@ -21,7 +21,7 @@ struct TraceOptions {
     double azimuth = 0.0;
     int rays = 64;
     std::string technique = "exact";
-    std::optional<int> minLayers, maxLayers, binarySteps, secantSteps, maxSteps;
+    QualityOptions quality;
     std::string out;
     bool gpu = false;
 };
@@ -36,16 +36,7 @@ std::vector<std::string> techniqueNames() {
 int runTrace(const TraceOptions& o) {
     const Technique technique = *parseTechnique(o.technique);
     TraceParams params = info(technique).defaults;
-    if (o.minLayers)
-        params.minLayers = *o.minLayers;
-    if (o.maxLayers)
-        params.maxLayers = *o.maxLayers;
-    if (o.binarySteps)
-        params.binarySteps = *o.binarySteps;
-    if (o.secantSteps)
-        params.secantSteps = *o.secantSteps;
-    if (o.maxSteps)
-        params.maxSteps = *o.maxSteps;
+    o.quality.applyTo(params);
 
     TraceScene scene;
     scene.rays = o.rays;
@@ -100,16 +91,7 @@ Action addTraceCommand(CLI::App& app) {
     cmd->add_option("--rays", o->rays, "Rays per side (R)")->check(CLI::Range(1, 4096));
     cmd->add_option("--technique", o->technique, "Technique")
         ->check(CLI::IsMember(techniqueNames()));
-    cmd->add_option("--min-layers", o->minLayers, "Layers looking straight down")
-        ->check(CLI::Range(1, kMaxLayersLimit));
-    cmd->add_option("--max-layers", o->maxLayers, "Layers at grazing angles")
-        ->check(CLI::Range(1, kMaxLayersLimit));
-    cmd->add_option("--binary-steps", o->binarySteps, "Binary search steps (relief, relaxed-cone)")
-        ->check(CLI::Range(0, kMaxRefineLimit));
-    cmd->add_option("--secant-steps", o->secantSteps, "Secant steps (secant)")
-        ->check(CLI::Range(0, kMaxRefineLimit));
-    cmd->add_option("--max-steps", o->maxSteps, "Cap on cone steps, cells or pyramid nodes")
-        ->check(CLI::Range(1, kMaxStepsLimit));
+    o->quality.addTo(*cmd);
     cmd->add_flag("--gpu", o->gpu,
                   "Trace on the GPU (headless OpenGL 4.3, the same kernels): same CSV");
     cmd->add_option("--out", o->out, "Output CSV (i,j,u,v,t,fetches); - for standard output")
