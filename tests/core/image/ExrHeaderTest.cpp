@@ -3,6 +3,7 @@
 
 #include "parallax/image/ImageFile.h"
 
+#include <OpenImageIO/imageio.h>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -39,6 +40,25 @@ QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArra
     return f.fileName();
 }
 
+// A two-part EXR (OpenEXR's multi-part layout: one header per part, then an empty one; the
+// parts share their display window).
+QByteArray twoPartExr(const QTemporaryDir& dir) {
+    const std::string file = dir.filePath("two.exr").toStdString();
+    auto out = OIIO::ImageOutput::create(file);
+    if (!out || !out->supports("multiimage"))
+        return {};
+    const OIIO::ImageSpec specs[2] = {OIIO::ImageSpec(4, 4, 1, OIIO::TypeDesc::HALF),
+                                      OIIO::ImageSpec(4, 4, 1, OIIO::TypeDesc::FLOAT)};
+    const std::vector<float> pixels(16, 0.25f);
+    bool ok = out->open(file, 2, specs) && out->write_image(OIIO::TypeDesc::FLOAT, pixels.data());
+    ok = ok && out->open(file, specs[1], OIIO::ImageOutput::AppendSubimage) &&
+         out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && out->close();
+    if (!ok)
+        qWarning("%s", out->geterror().c_str());
+    QFile f(QString::fromStdString(file));
+    return ok && f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
 long peakKilobytes() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
@@ -56,6 +76,7 @@ private slots:
     void negativeAttributeSizeIsRefused();
     void headerCutShortIsRefused();
     void otherFormatsAreNotInspected();
+    void everyPartOfAMultiPartFileIsChecked();
 };
 
 void ExrHeaderTest::validFileStillReads() {
@@ -115,6 +136,25 @@ void ExrHeaderTest::otherFormatsAreNotInspected() {
     const std::string png = dir.filePath("x.png").toStdString();
     QVERIFY(writeImage(png, Image(4, 4, 1), {}).ok());
     QVERIFY(readImage(png).ok());
+}
+
+void ExrHeaderTest::everyPartOfAMultiPartFileIsChecked() {
+    QTemporaryDir dir;
+    QByteArray exr = twoPartExr(dir);
+    QVERIFY(!exr.isEmpty());
+    QVERIFY(readImage(dir.filePath("two.exr").toStdString()).ok()); // the first part is read
+    // Corrupt the size of the second part's channel list.
+    const QByteArray channels("channels\0chlist\0", 16);
+    const int first = exr.indexOf(channels);
+    const int second = exr.indexOf(channels, first + 1);
+    QVERIFY(first > 0 && second > first);
+    const char huge[4] = {'\x00', '\x00', '\x00', '\x40'};
+    exr.replace(second + channels.size(), 4, huge, 4);
+    const auto image = readImage(writeFile(dir, "two-damaged.exr", exr).toStdString());
+    QVERIFY(!image.ok());
+    QVERIFY2(image.error().message.find("attribute 'channels' claims 1073741824 bytes") !=
+                 std::string::npos,
+             image.error().message.c_str());
 }
 
 QTEST_APPLESS_MAIN(ExrHeaderTest)
