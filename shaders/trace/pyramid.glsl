@@ -48,7 +48,7 @@ float pxTracePyramid(vec2 uv0, vec2 P) {
     vec2 X0 = pxCellCoords(uv0);
     vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
     float t = pxStartT();
-    ivec2 cell = ivec2(pxCellAlong(X0.x + dXY.x * t, dXY.x), pxCellAlong(X0.y + dXY.y * t, dXY.y));
+    ivec2 cell = pxCellAt(X0, dXY, t);
     // Start at the level whose nodes are about as wide as the whole ray's footprint: any level is
     // correct, and short rays need not descend from the top.
     float span = max(abs(dXY.x), abs(dXY.y)) * (1.0f - t);

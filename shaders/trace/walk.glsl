@@ -3,7 +3,7 @@
 
 vec2 pxWalkCells(vec2 X0, vec2 dXY, float ta, float tb, int budget) {
     float t = ta;
-    ivec2 cell = ivec2(pxCellAlong(X0.x + dXY.x * t, dXY.x), pxCellAlong(X0.y + dXY.y * t, dXY.y));
+    ivec2 cell = pxCellAt(X0, dXY, t);
     int stepX = dXY.x > 0.0f ? 1 : -1;
     int stepY = dXY.y > 0.0f ? 1 : -1;
     float nextX = pxBorderT(cell.x, X0.x, dXY.x);
