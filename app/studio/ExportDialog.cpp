@@ -96,6 +96,14 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
             lines << QStringLiteral("  ") + QString::fromStdString(f);
         for (const std::string& n : result->notes)
             lines << QString::fromStdString(n);
+        if (!result->kept.empty()) {
+            QStringList kept;
+            for (const std::string& f : result->kept)
+                kept << QString::fromStdString(f);
+            lines << tr("Kept %n file(s) no export wrote: %1", nullptr,
+                        static_cast<int>(kept.size()))
+                         .arg(kept.join(QStringLiteral(", ")));
+        }
         m_result->setText(lines.join(QLatin1Char('\n')));
         emit exportFinished(true);
     });
