@@ -40,6 +40,7 @@ void FaultInputsTest::initTestCase() {
     QVERIFY(::link(QString(m_dir + "/h.png").toLocal8Bit(),
                    QString(m_dir + "/hard.png").toLocal8Bit()) == 0);
     QDir(m_dir).mkdir("folder.png");
+    QDir(m_dir).mkdir("sub");
     QDir(m_dir).mkdir("folder.csv");
 }
 
@@ -62,7 +63,7 @@ void FaultInputsTest::outputIsAnInput_data() {
                             << "h.png";
     QTest::newRow("render albedo")
         << QStringList{"render",   "--height", "h.png",        "--albedo",
-                       "hard.png", "--out",    "x/../hard.png"}
+                       "hard.png", "--out",    "sub/../hard.png"}
         << "hard.png";
     QTest::newRow("bench --out") << QStringList{"bench", "--height", "h.png", "--out", "h.png"}
                                  << "h.png";
