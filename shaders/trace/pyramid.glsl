@@ -93,5 +93,5 @@ float pxTracePyramid(vec2 uv0, vec2 P) {
         if (before != after)
             level = min(level + 1, pxMaxMipTop);
     }
-    return t; // the cap ran out: the ray is still above the surface here
+    return pxFinishExact(X0, dXY, t); // the cap ran out above the surface
 }

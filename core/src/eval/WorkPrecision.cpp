@@ -98,12 +98,15 @@ WorkPrecisionChart makeWorkPrecisionChart(const BenchReport& report, double erro
                 point.cost = *cost;
                 point.error = row.stats.p99Error;
                 point.plotError = std::max(point.error, errorFloor);
+                point.maxError = row.stats.maxError;
+                point.plotMaxError = std::max(point.maxError, errorFloor);
+                point.wrongSurface = row.stats.wrongSurface;
                 point.row = i;
                 point.setting = row.setting;
                 series->points.push_back(point);
                 costLo = std::min(costLo, *cost);
                 costHi = std::max(costHi, *cost);
-                errorHi = std::max(errorHi, point.plotError);
+                errorHi = std::max(errorHi, point.plotMaxError);
             }
             if (costHi > 0.0)
                 panel.costRange = enclosingDecades(costLo, costHi);

@@ -79,7 +79,9 @@ void StabilityTest::extremeCases() {
     for (const TechniqueInfo& ti : allTechniques()) {
         auto tracer = test::makeTracer(field, mode, ti.id, c.scale);
         QVERIFY(tracer.ok());
-        const long long cap = fetchCap(ti.id, ti.defaults);
+        const long long cap =
+            fetchCap(ti.id, ti.defaults,
+                     rayCellBound(parallaxVector(c.scale, c.polar, c.azimuth), c.width, c.height));
         for (const TraceResult& r : traceScene(*tracer, scene)) {
             QVERIFY2(std::isfinite(r.u) && std::isfinite(r.v) && std::isfinite(r.t),
                      ti.name.data());
