@@ -10,6 +10,8 @@
 #include "parallax/heightfield/HeightFieldLoader.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/sample/ProceduralMaps.h"
+#include "parallax/trace/ParallaxBound.h"
+#include "parallax/trace/TraceScene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -247,6 +249,15 @@ int runBenchCommand(const BenchOptions& o) {
     }
     if (Status s = validate(config); !s)
         return fail(s.error().message);
+    for (double polar : config.polarDeg) {
+        for (float scale : config.scales) {
+            const BoundedParallax b =
+                boundParallax(parallaxVector(scale, polar, config.azimuthDeg));
+            if (!b.note.empty())
+                std::cerr << "note: polar " << polar << ", scale " << scale << ": " << b.note
+                          << "\n";
+        }
+    }
 
     // Progress on one rewritten line, only where someone watches it.
     const bool showProgress = !o.quiet && isatty(STDERR_FILENO);

