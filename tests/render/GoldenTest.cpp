@@ -1,4 +1,4 @@
-// Golden images on llvmpipe (deterministic: ../shared/docs/PLATFORM.md): every technique on the
+// Golden images on llvmpipe (deterministic: docs/platform.md): every technique on the
 // built-in bricks, plus a few feature combinations, 128 x 128. Regenerate after an intended change:
 //   PX_UPDATE_GOLDEN=1 ctest -R render.Golden
 // and review the new PNGs in tests/render/golden/ before committing them. On a mismatch the

@@ -31,7 +31,8 @@ private:
 };
 
 // Floor division and the cell range of extended node e at a level with `nodes` nodes over
-// `cells` cells per period: node e mod nodes, shifted by whole periods (CONE_MAPS.md §2 "wrap").
+// `cells` cells per period: node e mod nodes, shifted by whole periods (docs/cone-maps.md §2,
+// "repeat").
 inline int floorDiv(int a, int b) {
     return a >= 0 ? a / b : -((-a + b - 1) / b);
 }

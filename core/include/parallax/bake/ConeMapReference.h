@@ -11,8 +11,8 @@
 
 namespace px {
 
-// Conservative for the bilinear surface (CONVENTIONS §4): for every texel b and every point q of
-// the surface, |q - b| >= c(b) (h(q) - h_b).
+// Conservative for the bilinear surface (docs/conventions.md §4): for every texel b and every point
+// q of the surface, |q - b| >= c(b) (h(q) - h_b).
 ConeMap bakeConservativeConesBruteForce(const HeightField& field, WrapMode wrap);
 
 // Relaxed, safe for the bilinear surface: for every point q where the surface falls away from

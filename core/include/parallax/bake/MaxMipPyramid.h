@@ -1,6 +1,6 @@
 #pragma once
-// The maximum mipmap the `pyramid` technique walks (CONE_MAPS.md §4). Level 0 holds one value per
-// cell, the max of its four corner texels; level L+1 the max of up to four children, sizes
+// The maximum mipmap the `pyramid` technique walks (docs/cone-maps.md §4). Level 0 holds one value
+// per cell, the max of its four corner texels; level L+1 the max of up to four children, sizes
 // rounded up so odd sizes lose nothing.
 //   repeat: W x H cells, cell (i, j) spans texels i..i+1 mod W and j..j+1 mod H;
 //   clamp: (W+1) x (H+1) cells, index i+1 for cell i = -1..W-1 (the outer ones are the half-texel

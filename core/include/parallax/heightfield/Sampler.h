@@ -1,6 +1,6 @@
 #pragma once
 // Bilinear sampling of a height field between texel centres with the material's wrap mode
-// (CONVENTIONS §1), counting its fetches. It runs the trace kernels' own sampling code
+// (docs/conventions.md §1), counting its fetches. It runs the trace kernels' own sampling code
 // (shaders/trace/common.glsl), so bakers, tools and techniques read the surface identically.
 
 #include "parallax/heightfield/HeightField.h"

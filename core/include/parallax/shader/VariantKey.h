@@ -24,7 +24,7 @@ enum class TbnSource { VertexTangents, Derivatives };
 enum class ShaderOutput {
     Color,   // the shaded, sRGB-encoded colour
     Surface, // (u, v, t, fetches) of each pixel's hit, into a float target: heat maps and tests
-    Trace,   // the canonical trace scene (CONVENTIONS §5): pixel (i, j) is ray (i, j)
+    Trace,   // the canonical trace scene (docs/conventions.md §5): pixel (i, j) is ray (i, j)
 };
 
 struct VariantKey {
