@@ -1,4 +1,4 @@
-// parallax-cli trace: the canonical scene of CONVENTIONS §5 with one technique, as CSV.
+// parallax-cli trace: the canonical scene of docs/conventions.md §5 with one technique, as CSV.
 
 #include "Cli.h"
 #include "CommonOptions.h"

@@ -1,5 +1,5 @@
-// Shared by every technique. Conventions: ../../../shared/CONVENTIONS.md §2 and §5; cell space
-// and the cell solve: CONE_MAPS.md ("cell coordinates X = uW - 1/2").
+// Shared by every technique. Conventions: docs/conventions.md §2 and §5; cell space
+// and the cell solve: docs/cone-maps.md, "Terms" (cell coordinates X = uW - 1/2).
 //
 // Bindings each side provides:
 //   ivec2 pxMapSize; bool pxWrapRepeat; float pxHeightMax; float pxScale;
@@ -84,8 +84,8 @@ float pxHeight(vec2 uv) {
     return pxLerp(pxLerp(h00, h10, f.x), pxLerp(h01, h11, f.x), f.y);
 }
 
-// One bilinear sample of the cone map: (height, cone ratio). G holds sqrt(ratio) (CONVENTIONS §4),
-// interpolated before squaring as a GPU sampler would.
+// One bilinear sample of the cone map: (height, cone ratio). G holds sqrt(ratio)
+// (docs/conventions.md §4), interpolated before squaring as a GPU sampler would.
 vec2 pxConeSample(vec2 uv) {
     pxFetches += 1;
     vec2 c = pxCellCoords(uv);
@@ -113,13 +113,13 @@ float pxStartT() {
     return clamp(1.0f - pxHeightMax, 0.0f, 1.0f);
 }
 
-// cos of the polar angle, from P = s tan(theta) dir (CONVENTIONS §5).
+// cos of the polar angle, from P = s tan(theta) dir (docs/conventions.md §5).
 float pxCosTheta(vec2 P) {
     float tanTheta = pxScale > 0.0f ? length(P) / pxScale : 0.0f;
     return inversesqrt(1.0f + tanTheta * tanTheta);
 }
 
-// The seeds' quality range: maxLayers at grazing angles, minLayers looking straight down.
+// The tutorial shaders' quality range: maxLayers at grazing angles, minLayers looking straight down.
 int pxLayerCount(vec2 P) {
     float n = pxLerp(float(pxMaxLayers), float(pxMinLayers), pxCosTheta(P));
     return max(1, int(n + 0.5f));
@@ -219,7 +219,7 @@ float pxTraceStraightDown(vec2 uv0) {
     return 1.0f - pxHeight(uv0);
 }
 
-// The offset a ray may travel is bounded (TECHNIQUES.md: never divide by a z that can be 0):
+// The offset a ray may travel is bounded (docs/techniques.md: never divide by a z that can be 0):
 // grazing views reach the bound instead of infinity, and NaN becomes a straight-down view. The
 // bound is on the length, so the direction (the azimuth) is kept; an infinite component gives
 // the direction of its sign.

@@ -1,10 +1,10 @@
-// `cone`: conservative cone stepping (Dummer 2006) that never steps through the surface.
-// A cone interpolated between texels is no cone of the surface: at a needle's tip a grazing ray
-// stepped by it goes straight through. The cones baked at the four corners of the ray's cell are
-// (CONVENTIONS §4: no point of the bilinear surface inside them), so the ray steps as far as it
-// stays inside any one of them. Where that does not leave the cell, the cell is solved exactly.
-// Where the step cap runs out, the ray is still above the surface: the cell walk finishes it
-// (pxFinishExact), so every ray ends on the exact hit.
+// `cone`: conservative cone stepping (Dummer 2006) that never steps through the surface. A cone
+// interpolated between texels is no cone of the surface: at a needle's tip a grazing ray stepped by
+// it goes straight through. The cones baked at the four corners of the ray's cell are
+// (docs/conventions.md §4: no point of the bilinear surface inside them), so the ray steps as far
+// as it stays inside any one of them. Where that does not leave the cell, the cell is solved
+// exactly. Where the step cap runs out, the ray is still above the surface: the cell walk finishes
+// it (pxFinishExact), so every ray ends on the exact hit.
 
 struct PxConeCorners {
     vec4 h; // heights h00, h10, h01, h11

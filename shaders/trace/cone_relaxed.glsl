@@ -1,9 +1,9 @@
-// `relaxed-cone`: relaxed cone stepping (Policarpo & Oliveira, GPU Gems 3 ch. 18). The cone
-// sampled at the ray's position, interpolated between texels, may let the ray enter the solid.
-// The step inside a cone is dt = c (z - h) / (c + |P|). Where that would not leave the current
-// cell, the cell is solved exactly instead (CONE_MAPS.md "cell max tracing"): zero cones cannot
-// stall the march and features smaller than a cell are not stepped over. (`cone` steps with its
-// corners' cones instead: cone_conservative.glsl.)
+// `relaxed-cone`: relaxed cone stepping (Policarpo & Oliveira, GPU Gems 3 ch. 18). The cone sampled
+// at the ray's position, interpolated between texels, may let the ray enter the solid. The step
+// inside a cone is dt = c (z - h) / (c + |P|). Where that would not leave the current cell, the
+// cell is solved exactly instead (docs/cone-maps.md §1, "a minimum step"): zero cones cannot stall
+// the march and features smaller than a cell are not stepped over. (`cone` steps with its corners'
+// cones instead: cone_conservative.glsl.)
 //
 // The last step's bracket [tPrev, t] is not refined by halvings: the step may cross several
 // features (a thin wall, then the floor behind it), and halvings keep any crossing, not the

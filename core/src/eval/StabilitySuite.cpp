@@ -27,7 +27,7 @@ std::string format(const char* fmt, double value) {
     return text;
 }
 
-// Bilinear height in double precision (CONVENTIONS §1), independent of the kernels.
+// Bilinear height in double precision (docs/conventions.md §1), independent of the kernels.
 double bilinear(const HeightField& f, WrapMode wrap, double u, double v) {
     const double X = u * f.width - 0.5, Y = v * f.height - 0.5;
     const double x0 = std::floor(X), y0 = std::floor(Y);

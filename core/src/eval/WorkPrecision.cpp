@@ -119,24 +119,4 @@ WorkPrecisionChart makeWorkPrecisionChart(const BenchReport& report, double erro
     return chart;
 }
 
-std::optional<PointRef> pickPoint(const WorkPrecisionPanel& panel, double cost, double error,
-                                  double maxDecades) {
-    if (!(cost > 0.0) || !(error > 0.0))
-        return std::nullopt;
-    std::optional<PointRef> best;
-    double bestDistance = maxDecades;
-    for (std::size_t s = 0; s < panel.series.size(); ++s) {
-        for (std::size_t p = 0; p < panel.series[s].points.size(); ++p) {
-            const WorkPrecisionPoint& point = panel.series[s].points[p];
-            const double d =
-                std::hypot(std::log10(point.cost / cost), std::log10(point.plotError / error));
-            if (d <= bestDistance) {
-                bestDistance = d;
-                best = PointRef{s, p};
-            }
-        }
-    }
-    return best;
-}
-
 } // namespace px

@@ -1,5 +1,5 @@
 // Stiff and extreme inputs: every technique returns finite hits with t in [0, 1] and fetches
-// within its cap, whatever the map, angle or scale (TECHNIQUES.md, numerical pitfalls).
+// within its cap, whatever the map, angle or scale (docs/techniques.md, "How they fail").
 
 #include "TestSupport.h"
 #include "parallax/sample/ProceduralMaps.h"

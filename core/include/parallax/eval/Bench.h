@@ -1,8 +1,8 @@
 #pragma once
 // The benchmark behind `parallax-cli bench` and the editor's Compare panel: every technique over a
-// sweep of its quality settings on the canonical trace scene (CONVENTIONS §5), measured against
-// `exact` on the same rays. Errors and fetches are deterministic; times are measured, reported,
-// never asserted.
+// sweep of its quality settings on the canonical trace scene (docs/conventions.md §5), measured
+// against `exact` on the same rays. Errors and fetches are deterministic; times are measured,
+// reported, never asserted.
 //
 // Threading: runBench() is a pure function of its config (no global state) and may run on any
 // thread; it reports progress and polls for cancellation through an EvalControl.

@@ -1,7 +1,7 @@
 #pragma once
 // Accuracy and cost of a technique's hits against the exact reference's hits for the same rays
-// (CONVENTIONS §5: error in texels of the map, cost in fetches). Pure functions of the hits: the
-// same rays give the same figures on every run and thread count.
+// (docs/conventions.md §5: error in texels of the map, cost in fetches). Pure functions of the
+// hits: the same rays give the same figures on every run and thread count.
 
 #include "parallax/trace/Tracer.h"
 

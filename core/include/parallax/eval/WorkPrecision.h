@@ -74,9 +74,4 @@ struct WorkPrecisionChart {
 // not positive (no log position) are left out.
 WorkPrecisionChart makeWorkPrecisionChart(const BenchReport& report, double errorFloor = 1e-4);
 
-// The point nearest to (cost, error) in log-log distance, if within `maxDecades` of it: what a
-// click on the panel picked.
-std::optional<PointRef> pickPoint(const WorkPrecisionPanel& panel, double cost, double error,
-                                  double maxDecades = 0.1);
-
 } // namespace px

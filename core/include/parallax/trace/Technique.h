@@ -1,6 +1,6 @@
 #pragma once
-// The techniques of ../shared/docs/TECHNIQUES.md, their names, what they read and their
-// parameters (the ones artists know from the seeds).
+// The techniques of docs/techniques.md, their names, what they read and their
+// parameters (the ones artists know from the tutorial shaders).
 
 #include <optional>
 #include <span>
@@ -24,7 +24,7 @@ enum class Technique {
 
 // Parameters every technique understands; each reads the ones its info() lists.
 struct TraceParams {
-    int minLayers = 8;   // layers looking straight down (the seeds' quality range)
+    int minLayers = 8;   // layers looking straight down (the tutorials' quality range)
     int maxLayers = 32;  // layers at grazing angles
     int binarySteps = 6; // relief's refinement halvings
     int secantSteps = 3; // secant refinement steps

@@ -1,6 +1,6 @@
 #pragma once
-// The canonical trace scene (CONVENTIONS §5): R x R rays entering at texel-centred uv0 with one
-// direction, used by `trace`, `bench`, the tests and every accuracy figure.
+// The canonical trace scene (docs/conventions.md §5): R x R rays entering at texel-centred uv0 with
+// one direction, used by `trace`, `bench`, the tests and every accuracy figure.
 
 #include "parallax/Result.h"
 #include "parallax/trace/Tracer.h"
@@ -34,7 +34,7 @@ Status validate(const TraceScene& scene);
 // All R*R rays, row-major (index j * R + i), traced in parallel.
 std::vector<TraceResult> traceScene(const Tracer& tracer, const TraceScene& scene);
 
-// Distance between two hit points in texels of a W x H map (CONVENTIONS §5).
+// Distance between two hit points in texels of a W x H map (docs/conventions.md §5).
 double hitErrorTexels(const TraceResult& a, const TraceResult& b, int width, int height);
 
 // The CSV `parallax-cli trace` writes: header "i,j,u,v,t,fetches", full float precision.
