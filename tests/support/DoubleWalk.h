@@ -1,7 +1,7 @@
 #pragma once
 // The exact hit of a ray in double precision: the cell walk and the ray/bilinear-patch quadratic
-// of docs/conventions.md §2, written independently of the float kernels, so tests can tell how much of a
-// kernel's answer float32 costs on long, grazing rays.
+// of docs/conventions.md §2, written independently of the float kernels, so tests can tell how much
+// of a kernel's answer float32 costs on long, grazing rays.
 
 #include "parallax/heightfield/HeightField.h"
 #include "parallax/heightfield/WrapMode.h"
