@@ -11,7 +11,12 @@
 # (every EXPECT regex, stdout and stderr together): a failing command needs both, a succeeding one
 # EXPECT or CREATES (see PxRunCli.cmake).
 
-set(PX_SHARED_DIR "${PROJECT_SOURCE_DIR}/../shared" CACHE PATH "The shared/ folder beside the project")
+cmake_path(SET _px_default_shared NORMALIZE "${PROJECT_SOURCE_DIR}/../shared")
+set(PX_SHARED_DIR "${_px_default_shared}" CACHE PATH
+    "The folder holding testdata/ with the third-party conformance data (not redistributable)")
+set(PX_CONFORMANCE AUTO CACHE STRING "The conformance test: AUTO (where its data is found), ON (required), OFF")
+set_property(CACHE PX_CONFORMANCE PROPERTY STRINGS AUTO ON OFF)
+include(PxConformance)
 # Sanitized code runs several times slower; the timeouts guard against hangs, not speed.
 if(PX_SANITIZE)
   set(PX_TIMEOUT_SCALE 8)

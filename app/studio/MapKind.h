@@ -1,6 +1,6 @@
 #pragma once
 // The maps a material can hold, as the editor lists them, and how files are recognised as one of
-// them by their suffix (CONVENTIONS §6).
+// them by their suffix (docs/conventions.md §6).
 
 #include "parallax/material/Material.h"
 

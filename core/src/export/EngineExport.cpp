@@ -4,6 +4,7 @@
 
 #include "ExportJob.h"
 #include "ExportTextures.h"
+#include "io/ShortestDecimal.h"
 
 #include <sstream>
 
@@ -11,7 +12,6 @@ namespace px::exporter {
 
 namespace {
 
-// The parallax part of the notes: what the material asks for in the engine's terms.
 // The layer counts in the engine's terms (a technique without layers gets the march defaults).
 void stepLines(std::ostringstream& note, const Material& m, const char* minName,
                const char* maxName) {
@@ -27,7 +27,7 @@ void stepLines(std::ostringstream& note, const Material& m, const char* minName,
 // The parallax part of the notes: what the material asks for in the engine's terms.
 void parallaxLines(std::ostringstream& note, const Material& m, const char* scaleName,
                    const char* minName, const char* maxName) {
-    note << "  " << scaleName << " = " << decimal(m.heightScale)
+    note << "  " << scaleName << " = " << shortestDecimal(m.heightScale)
          << "   (the relief's depth in uv units: h = 0 lies this far below the surface)\n";
     stepLines(note, m, minName, maxName);
 }
@@ -76,7 +76,8 @@ Status writeUnreal(ExportJob& job) {
     note << "\nMaterial graph:\n";
     if (parallax) {
         note << "  Add the ParallaxOcclusionMapping function; Heightmap Texture = " << base
-             << "_H, Heightmap Channel = (1, 0, 0, 0), UVs = TexCoord[0] * " << decimal(m.tiling)
+             << "_H, Heightmap Channel = (1, 0, 0, 0), UVs = TexCoord[0] * "
+             << shortestDecimal(m.tiling)
              << ",\n  Reference Plane so that white lies on the surface (the relief is carved "
                 "into the polygon), and\n";
         parallaxLines(note, m, "Height Ratio", "Min Steps", "Max Steps");
@@ -85,7 +86,7 @@ Status writeUnreal(ExportJob& job) {
             note << "  Self-shadowing (on in the material) is not set up: the function's Shadow "
                     "output, with the light vector in tangent space, is where Unreal has it.\n";
     } else {
-        note << "  UVs = TexCoord[0] * " << decimal(m.tiling) << " (no parallax: technique "
+        note << "  UVs = TexCoord[0] * " << shortestDecimal(m.tiling) << " (no parallax: technique "
              << info(m.technique).name << ").\n";
     }
     if (!job.assets.albedo.empty())
@@ -95,8 +96,8 @@ Status writeUnreal(ExportJob& job) {
     if (job.orm())
         note << "  Ambient Occlusion <- " << base << "_ORM R, Roughness <- G, Metallic <- B\n";
     else
-        note << "  Roughness = " << decimal(m.roughness) << ", Metallic = " << decimal(m.metallic)
-             << "\n";
+        note << "  Roughness = " << shortestDecimal(m.roughness)
+             << ", Metallic = " << shortestDecimal(m.metallic) << "\n";
     return job.text(job.stem + "_Unreal.txt", note.str());
 }
 
@@ -162,16 +163,17 @@ Status writeUnity(ExportJob& job) {
              << "              sRGB off, white = high\n";
     }
     note << "\nEvery texture: Wrap Mode = " << (m.wrap == WrapMode::Repeat ? "Repeat" : "Clamp")
-         << ". Material Tiling = (" << decimal(m.tiling) << ", " << decimal(m.tiling) << ").\n";
+         << ". Material Tiling = (" << shortestDecimal(m.tiling) << ", "
+         << shortestDecimal(m.tiling) << ").\n";
     if (!packed)
-        note << "Metallic = " << decimal(m.metallic)
-             << ", Smoothness = " << decimal(1.0f - m.roughness) << "\n";
+        note << "Metallic = " << shortestDecimal(m.metallic)
+             << ", Smoothness = " << shortestDecimal(1.0f - m.roughness) << "\n";
     if (parallax) {
         note << "\nHDRP Lit (parallax occlusion): Displacement Mode = Pixel displacement, Height "
                 "Map = "
              << job.heightName(base + "_Height")
-             << ", Parametrization = Amplitude,\n  Amplitude = " << decimal(m.heightScale)
-             << " x the tile's size in centimetres (" << decimal(m.heightScale * 100.0f)
+             << ", Parametrization = Amplitude,\n  Amplitude = " << shortestDecimal(m.heightScale)
+             << " x the tile's size in centimetres (" << shortestDecimal(m.heightScale * 100.0f)
              << " cm for a 1 m tile), Base = 1 (white lies on the surface),\n"
              << "  Primitive Length = Primitive Width = the tile's size in metres (1 for a 1 m "
                 "tile), Lock with height map tiling rate on:\n  HDRP divides the Amplitude by "
@@ -181,7 +183,8 @@ Status writeUnity(ExportJob& job) {
             note << "  Self-shadowing (on in the material) is not exported: HDRP's pixel "
                     "displacement has no self-shadow term (Depth Offset only moves depth).\n";
         note << "Built-in Standard / URP Lit (offset parallax only): Height Map = "
-             << job.heightName(base + "_Height") << ", Height Scale = " << decimal(m.heightScale);
+             << job.heightName(base + "_Height")
+             << ", Height Scale = " << shortestDecimal(m.heightScale);
         if (m.heightScale < 0.005f || m.heightScale > 0.08f)
             note << " (outside Unity's 0.005 to 0.08 slider: type it in, or expect a different "
                     "depth)";

@@ -1,6 +1,6 @@
 #pragma once
 // Every file the project writes goes to a temporary name in the target's folder and is renamed
-// over the target only once complete (CONVENTIONS §6): a failure never leaves half a file.
+// over the target only once complete (docs/conventions.md §6): a failure never leaves half a file.
 // Every step is checked (each write, fsync, close) before the rename, so a full disk is an
 // error naming the target and the reason, never a truncated file reported as success.
 
