@@ -11,11 +11,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <plplot.h>
+#include <unistd.h>
 #include <vector>
 
 namespace px::cli {
@@ -216,6 +219,17 @@ void drawLegend(const WorkPrecisionChart& chart) {
     plschr(0.0, 1.0);
 }
 
+// Why PLplot's file came out incomplete: the system's answer to one more checked byte.
+std::string whyUnwritable(const std::filesystem::path& file) {
+    const int fd = ::open(file.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (fd < 0)
+        return systemReason(errno);
+    const char byte = '\n';
+    int code = ::write(fd, &byte, 1) == 1 && ::fsync(fd) == 0 ? 0 : errno;
+    ::close(fd);
+    return code != 0 ? systemReason(code) : std::string("the plotting library stopped early");
+}
+
 } // namespace
 
 Status writeWorkPrecisionPlot(const std::string& path, const WorkPrecisionChart& chart,
@@ -264,12 +278,15 @@ Status writeWorkPrecisionPlot(const std::string& path, const WorkPrecisionChart&
     // PLplot does not report a full disk: a complete SVG ends with its closing tag. The checked
     // writer then writes it for good (every step checked, as every other output).
     Result<std::string> svg = readTextFile(temp.string());
+    const std::string end = "</svg>";
+    const bool complete =
+        svg && svg->find(end, svg->size() > 64 ? svg->size() - 64 : 0) != std::string::npos;
+    const std::string reason = complete ? std::string() : whyUnwritable(temp);
     std::error_code ec;
     std::filesystem::remove(temp, ec);
-    const std::string end = "</svg>";
-    if (!svg || svg->find(end, svg->size() > 64 ? svg->size() - 64 : 0) == std::string::npos)
-        return fileError(path, "writing the plot failed (the disk may be full); the previous file, "
-                               "if any, is unchanged");
+    if (!complete)
+        return fileError(path, "writing failed (" + reason +
+                                   "); the previous file, if any, is unchanged");
     return writeFileAtomically(path, *svg);
 }
 
