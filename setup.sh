@@ -45,7 +45,7 @@ case "$mode" in
     if [ -x "$build/app/studio/parallax-studio" ]; then
       exec "$build/app/studio/parallax-studio" "${@:2}"
     fi
-    # Until the editor lands: trace the built-in sample with every technique.
+    # Built without the editor (-DPX_BUILD_STUDIO=OFF): trace the built-in sample instead.
     "$build/app/cli/parallax-cli" sample bricks --size 256 --out "$build/bricks.png"
     "$build/app/cli/parallax-cli" trace --height "$build/bricks.png" --scale 0.05 --polar 60 \
       --azimuth 35 --rays 64 --technique pyramid --out "$build/bricks-trace.csv"

@@ -1,4 +1,5 @@
-# Every third-party package the project uses, found once. See ../shared/docs/PLATFORM.md.
+# Every third-party package the project uses, found once (docs/platform.md). A new one is also
+# added to the package list in setup.sh.
 find_package(OpenImageIO CONFIG REQUIRED)
 # Debian 12's OpenImageIO config names a non-existent /usr/include/opencv4: drop it.
 foreach(_t OpenImageIO::OpenImageIO OpenImageIO::OpenImageIO_Util)

@@ -7,7 +7,12 @@
 #   px_add_cli_test(NAME <name> COMMAND <args...> [EXPECT <regex>] [FAIL] [LABELS <labels...>])
 # Runs parallax-cli with the arguments; EXPECT matches its output, FAIL expects a non-zero exit.
 
-set(PX_SHARED_DIR "${PROJECT_SOURCE_DIR}/../shared" CACHE PATH "The shared/ folder beside the project")
+cmake_path(SET _px_default_shared NORMALIZE "${PROJECT_SOURCE_DIR}/../shared")
+set(PX_SHARED_DIR "${_px_default_shared}" CACHE PATH
+    "The folder holding testdata/ with the third-party conformance data (not redistributable)")
+set(PX_CONFORMANCE AUTO CACHE STRING "The conformance test: AUTO (where its data is found), ON (required), OFF")
+set_property(CACHE PX_CONFORMANCE PROPERTY STRINGS AUTO ON OFF)
+include(PxConformance)
 # Sanitized code runs several times slower; the timeouts guard against hangs, not speed.
 if(PX_SANITIZE)
   set(PX_TIMEOUT_SCALE 8)

@@ -117,6 +117,21 @@ void drawPanel(const WorkPrecisionChart& chart, const WorkPrecisionPanel& panel)
         plwidth(1.0);
         plstring(static_cast<PLINT>(x.size()), x.data(), y.data(),
                  techniqueSymbol(series.technique));
+        // The tail p99 hides: a dotted whisker up to the worst ray, and how many rays found
+        // another surface.
+        pllsty(3);
+        for (const WorkPrecisionPoint& p : series.points) {
+            if (p.plotMaxError <= p.plotError)
+                continue;
+            const PLFLT wx[2] = {std::log10(p.cost), std::log10(p.cost)};
+            const PLFLT wy[2] = {std::log10(p.plotError), std::log10(p.plotMaxError)};
+            plline(2, wx, wy);
+            if (p.wrongSurface > 0) {
+                const std::string label = " " + std::to_string(p.wrongSurface) + " wrong";
+                plptex(wx[1], wy[1], 1.0, 0.0, 0.0, label.c_str());
+            }
+        }
+        pllsty(1);
         for (const WorkPrecisionPoint& p : series.points) {
             if (!p.setting.isDefault)
                 continue;
@@ -131,7 +146,8 @@ void drawPanel(const WorkPrecisionChart& chart, const WorkPrecisionPanel& panel)
     plbox("bcnstl", 0.0, 0, "bcnstlv", 0.0, 0);
     char title[96];
     std::snprintf(title, sizeof title, "polar %s", formatDegrees(panel.polarDeg).c_str());
-    pllab(std::string(costAxisTitle(panel.axis)).c_str(), "p99 hit error (texels)", title);
+    pllab(std::string(costAxisTitle(panel.axis)).c_str(),
+          "p99 hit error (texels); dotted: up to max", title);
 }
 
 // One legend for every panel, in the header band: every technique present, then the marks.

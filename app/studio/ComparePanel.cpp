@@ -109,7 +109,6 @@ void ComparePanel::run() {
         for (BenchSetting& setting : qualitySweep(t.id))
             config.settings.push_back(std::move(setting));
     }
-    config.polarDeg = {30.0, 60.0, 80.0, 87.0};
     config.scales = {s.material.heightScale};
     config.rays = m_rays->value();
     config.timingRepeats = 1;

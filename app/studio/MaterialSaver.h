@@ -12,7 +12,7 @@ namespace px::studio {
 
 // The state as saved: unsaved maps now have files, paths absolute. Maps written: height 16-bit
 // PNG, albedo 8-bit sRGB PNG, normal 16-bit PNG, cone maps 16-bit PNG with R = height and
-// G = sqrt(ratio) rounded down (CONVENTIONS §4).
+// G = sqrt(ratio) rounded down (docs/conventions.md §4).
 Result<DocumentState> saveDocumentState(const DocumentState& state, const std::string& path);
 
 // A state from the undo history after a save: each map it holds unsaved that the save wrote (the

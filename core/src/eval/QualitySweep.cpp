@@ -66,7 +66,8 @@ std::vector<BenchSetting> qualitySweep(Technique technique) {
     case Technique::Pom:
     case Technique::Relief:
     case Technique::Secant:
-        // The seeds' quality range (8-32) and its halves and doubles: layers scale by view angle.
+        // The tutorial shaders' quality range (8-32) and its halves and doubles: layers scale by
+        // view angle.
         for (auto [lo, hi] : {std::pair{4, 16}, {8, 32}, {16, 64}, {32, 128}, {64, 256}})
             points.push_back(withLayers(technique, lo, hi));
         break;

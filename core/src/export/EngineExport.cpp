@@ -4,6 +4,7 @@
 
 #include "ExportJob.h"
 #include "ExportTextures.h"
+#include "io/ShortestDecimal.h"
 
 #include <sstream>
 
@@ -16,7 +17,7 @@ void parallaxLines(std::ostringstream& note, const Material& m, const char* scal
                    const char* minName, const char* maxName) {
     const TechniqueInfo& t = info(m.technique);
     const TraceParams layers = t.usesLayers ? m.params : info(Technique::Pom).defaults;
-    note << "  " << scaleName << " = " << decimal(m.heightScale)
+    note << "  " << scaleName << " = " << shortestDecimal(m.heightScale)
          << "   (the relief's depth in uv units: h = 0 lies this far below the surface)\n"
          << "  " << minName << " = " << layers.minLayers << ", " << maxName << " = "
          << layers.maxLayers << "\n";
@@ -69,13 +70,14 @@ Status writeUnreal(ExportJob& job) {
     note << "\nMaterial graph:\n";
     if (parallax) {
         note << "  Add the ParallaxOcclusionMapping function; Heightmap Texture = " << base
-             << "_H, Heightmap Channel = (1, 0, 0, 0), UVs = TexCoord[0] * " << decimal(m.tiling)
+             << "_H, Heightmap Channel = (1, 0, 0, 0), UVs = TexCoord[0] * "
+             << shortestDecimal(m.tiling)
              << ",\n  Reference Plane so that white lies on the surface (the relief is carved "
                 "into the polygon), and\n";
         parallaxLines(note, m, "Height Ratio", "Min Steps", "Max Steps");
         note << "  Feed its Parallax UVs to every texture sample below.\n";
     } else {
-        note << "  UVs = TexCoord[0] * " << decimal(m.tiling) << " (no parallax: technique "
+        note << "  UVs = TexCoord[0] * " << shortestDecimal(m.tiling) << " (no parallax: technique "
              << info(m.technique).name << ").\n";
     }
     if (!job.assets.albedo.empty())
@@ -85,8 +87,8 @@ Status writeUnreal(ExportJob& job) {
     if (job.orm())
         note << "  Ambient Occlusion <- " << base << "_ORM R, Roughness <- G, Metallic <- B\n";
     else
-        note << "  Roughness = " << decimal(m.roughness) << ", Metallic = " << decimal(m.metallic)
-             << "\n";
+        note << "  Roughness = " << shortestDecimal(m.roughness)
+             << ", Metallic = " << shortestDecimal(m.metallic) << "\n";
     return job.text(job.stem + "_Unreal.txt", note.str());
 }
 
@@ -152,20 +154,22 @@ Status writeUnity(ExportJob& job) {
              << "              sRGB off, white = high\n";
     }
     note << "\nEvery texture: Wrap Mode = " << (m.wrap == WrapMode::Repeat ? "Repeat" : "Clamp")
-         << ". Material Tiling = (" << decimal(m.tiling) << ", " << decimal(m.tiling) << ").\n";
+         << ". Material Tiling = (" << shortestDecimal(m.tiling) << ", "
+         << shortestDecimal(m.tiling) << ").\n";
     if (!packed)
-        note << "Metallic = " << decimal(m.metallic)
-             << ", Smoothness = " << decimal(1.0f - m.roughness) << "\n";
+        note << "Metallic = " << shortestDecimal(m.metallic)
+             << ", Smoothness = " << shortestDecimal(1.0f - m.roughness) << "\n";
     if (parallax) {
         note << "\nHDRP Lit (parallax occlusion): Displacement Mode = Pixel displacement, Height "
                 "Map = "
              << job.heightName(base + "_Height")
-             << ", Parametrization = Amplitude,\n  Amplitude = " << decimal(m.heightScale)
-             << " x the tile's size in centimetres (" << decimal(m.heightScale * 100.0f)
+             << ", Parametrization = Amplitude,\n  Amplitude = " << shortestDecimal(m.heightScale)
+             << " x the tile's size in centimetres (" << shortestDecimal(m.heightScale * 100.0f)
              << " cm for a 1 m tile), Base = 1 (white lies on the surface),\n";
         parallaxLines(note, m, "(height scale)", "Minimum Steps", "Maximum Steps");
         note << "Built-in Standard / URP Lit (offset parallax only): Height Map = "
-             << job.heightName(base + "_Height") << ", Height Scale = " << decimal(m.heightScale);
+             << job.heightName(base + "_Height")
+             << ", Height Scale = " << shortestDecimal(m.heightScale);
         if (m.heightScale < 0.005f || m.heightScale > 0.08f)
             note << " (outside Unity's 0.005 to 0.08 slider: type it in, or expect a different "
                     "depth)";

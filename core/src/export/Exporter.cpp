@@ -5,13 +5,13 @@
 
 #include "ExportJob.h"
 #include "ExportTextures.h"
+#include "io/ShortestDecimal.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/NormalMapBaker.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
 
 #include <cstdio>
-#include <cstdlib>
 
 namespace px {
 
@@ -27,19 +27,9 @@ std::string fileStem(const std::string& name) {
     return stem.empty() ? "material" : stem;
 }
 
-double decimal(float value) {
-    char buffer[32];
-    for (int precision = 6; precision <= 9; ++precision) {
-        std::snprintf(buffer, sizeof buffer, "%.*g", precision, static_cast<double>(value));
-        if (std::strtof(buffer, nullptr) == value)
-            break;
-    }
-    return std::strtod(buffer, nullptr);
-}
-
 std::string formatDecimal(float value) {
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", decimal(value));
+    std::snprintf(buffer, sizeof buffer, "%g", shortestDecimal(value));
     return buffer;
 }
 

@@ -4,6 +4,7 @@
 
 #include "ExportJob.h"
 #include "ExportTextures.h"
+#include "io/ShortestDecimal.h"
 #include "parallax/Version.h"
 #include "parallax/material/MaterialFile.h"
 
@@ -101,8 +102,8 @@ Status writeGltf(ExportJob& job) {
         pbr["baseColorTexture"] = texture(name);
     }
     const std::optional<Image> orm = job.orm();
-    pbr["metallicFactor"] = orm ? 1.0 : decimal(m.metallic);
-    pbr["roughnessFactor"] = orm ? 1.0 : decimal(m.roughness);
+    pbr["metallicFactor"] = orm ? 1.0 : shortestDecimal(m.metallic);
+    pbr["roughnessFactor"] = orm ? 1.0 : shortestDecimal(m.roughness);
     if (orm) {
         const std::string name = job.stem + "_orm.png";
         if (Status s = job.image(name, *orm, PixelFormat::UInt8); !s)

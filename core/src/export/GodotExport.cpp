@@ -4,6 +4,7 @@
 
 #include "ExportJob.h"
 #include "ExportTextures.h"
+#include "io/ShortestDecimal.h"
 
 #include <sstream>
 
@@ -49,8 +50,8 @@ Status writeGodot(ExportJob& job) {
         props << "albedo_texture = " << texture(name, "albedo") << "\n";
     }
     const std::optional<Image> orm = job.orm();
-    props << "metallic = " << real(orm ? 1.0 : decimal(m.metallic)) << "\n"
-          << "roughness = " << real(orm ? 1.0 : decimal(m.roughness)) << "\n";
+    props << "metallic = " << real(orm ? 1.0 : shortestDecimal(m.metallic)) << "\n"
+          << "roughness = " << real(orm ? 1.0 : shortestDecimal(m.roughness)) << "\n";
     if (orm) {
         const std::string name = job.stem + "_orm.png";
         if (Status s = job.image(name, *orm, PixelFormat::UInt8); !s)
@@ -85,7 +86,8 @@ Status writeGodot(ExportJob& job) {
         const bool deep = m.technique != Technique::Offset;
         const TraceParams layers = t.usesLayers ? m.params : info(Technique::Pom).defaults;
         props << "heightmap_enabled = true\n"
-              << "heightmap_scale = " << real(decimal(godotHeightScale(m.heightScale))) << "\n"
+              << "heightmap_scale = " << real(shortestDecimal(godotHeightScale(m.heightScale)))
+              << "\n"
               << "heightmap_deep_parallax = " << (deep ? "true" : "false") << "\n";
         if (deep)
             props << "heightmap_min_layers = " << layers.minLayers << "\n"
@@ -98,8 +100,8 @@ Status writeGodot(ExportJob& job) {
                                        std::to_string(layers.minLayers) + " to " +
                                        std::to_string(layers.maxLayers) + " layers");
     }
-    props << "uv1_scale = Vector3(" << real(decimal(m.tiling)) << ", " << real(decimal(m.tiling))
-          << ", 1.0)\n"
+    props << "uv1_scale = Vector3(" << real(shortestDecimal(m.tiling)) << ", "
+          << real(shortestDecimal(m.tiling)) << ", 1.0)\n"
           << "texture_repeat = " << (m.wrap == WrapMode::Repeat ? "true" : "false") << "\n";
 
     std::ostringstream tres;

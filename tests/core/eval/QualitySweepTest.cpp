@@ -1,5 +1,5 @@
-// The bench's sweeps: each technique's default is measured, POM includes the seeds' baseline, and
-// the technique list parses as documented.
+// The bench's sweeps: each technique's default is measured, POM includes the tutorial shaders'
+// baseline, and the technique list parses as documented.
 
 #include "parallax/eval/QualitySweep.h"
 

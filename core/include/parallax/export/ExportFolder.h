@@ -1,7 +1,7 @@
 #pragma once
 // An export folder written as a whole: files go into a hidden sibling of the target, which is
 // renamed into place only once everything is there. A failure, a crash or Ctrl-C leave the target
-// as it was (CONVENTIONS §6, for folders).
+// as it was (docs/conventions.md §6, for folders).
 //
 // Replacing an existing folder needs `force`, and even then only a folder that is empty or that a
 // previous export wrote (it holds the marker file kExportMarker): --force must never wipe a folder

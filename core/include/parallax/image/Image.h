@@ -1,5 +1,5 @@
 #pragma once
-// A W×H image of float channels, row 0 at the top of the file (CONVENTIONS §1: no flips).
+// A W×H image of float channels, row 0 at the top of the file (docs/conventions.md §1: no flips).
 
 #include <cstddef>
 #include <vector>

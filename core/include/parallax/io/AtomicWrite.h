@@ -1,6 +1,6 @@
 #pragma once
 // Every file the project writes goes to a temporary name in the target's folder and is renamed
-// over the target only once complete (CONVENTIONS §6): a failure never leaves half a file.
+// over the target only once complete (docs/conventions.md §6): a failure never leaves half a file.
 
 #include "parallax/Result.h"
 

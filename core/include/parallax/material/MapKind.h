@@ -1,6 +1,6 @@
 #pragma once
 // The maps a material can hold, as the editor and the import list them, and how files are
-// recognised as one of them by their suffix (CONVENTIONS §6).
+// recognised as one of them by their suffix (docs/conventions.md §6).
 
 #include "parallax/material/Material.h"
 
