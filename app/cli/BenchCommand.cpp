@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -197,6 +198,9 @@ int runBenchCommand(const BenchOptions& o) {
         return replot(o);
     if (o.out.empty())
         return fail("give --out FILE.csv (or - for standard output)");
+    // Every output is checked before measuring (the folders in Cli.cpp), not after minutes.
+    if (!o.plot.empty() && std::filesystem::path(o.plot).extension() != ".svg")
+        return fail(o.plot + ": the plot is written as SVG: name it .svg");
     Result<std::vector<Technique>> techniques = parseTechniqueList(o.techniques);
     if (!techniques)
         return fail(techniques.error().message);

@@ -7,6 +7,7 @@
 #include "WorkPrecisionPlot.h"
 
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/Temporaries.h"
 
 #include <algorithm>
 #include <array>
@@ -222,6 +223,7 @@ Status writeWorkPrecisionPlot(const std::string& path, const WorkPrecisionChart&
     if (std::filesystem::path(path).extension() != ".svg")
         return fileError(path, "the plot is written as SVG: name it .svg");
     const std::filesystem::path temp = temporaryPathFor(path);
+    const TemporaryGuard guard(temp);
     // PLplot ends the process when it cannot open its file: make sure it can first.
     if (!std::ofstream(temp))
         return fileError(path, "cannot create the file (missing folder or no permission)");
@@ -259,12 +261,16 @@ Status writeWorkPrecisionPlot(const std::string& path, const WorkPrecisionChart&
     }
     plend();
 
+    // PLplot does not report a full disk: a complete SVG ends with its closing tag. The checked
+    // writer then writes it for good (every step checked, as every other output).
+    Result<std::string> svg = readTextFile(temp.string());
     std::error_code ec;
-    if (!std::filesystem::exists(temp, ec) || std::filesystem::file_size(temp, ec) == 0) {
-        std::filesystem::remove(temp, ec);
-        return fileError(path, "cannot write the plot there");
-    }
-    return commitTemporary(temp, path);
+    std::filesystem::remove(temp, ec);
+    const std::string end = "</svg>";
+    if (!svg || svg->find(end, svg->size() > 64 ? svg->size() - 64 : 0) == std::string::npos)
+        return fileError(path, "writing the plot failed (the disk may be full); the previous file, "
+                               "if any, is unchanged");
+    return writeFileAtomically(path, *svg);
 }
 
 } // namespace px::cli

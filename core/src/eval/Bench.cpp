@@ -269,7 +269,7 @@ Status validate(const BenchConfig& c) {
             return Error{std::string(info(s.technique).name) +
                          " traces no rays: nothing to measure"};
         if (Status v = validate(s.params); !v)
-            return Error{std::string(info(s.technique).name) + ": " + v.error().message};
+            return v.error().prefixed(std::string(info(s.technique).name) + ": ");
     }
     if (c.polarDeg.empty())
         return Error{"the benchmark needs at least one polar angle"};

@@ -12,18 +12,24 @@ namespace px::exporter {
 
 namespace {
 
-// The parallax part of the notes: what the material asks for in the engine's terms.
-void parallaxLines(std::ostringstream& note, const Material& m, const char* scaleName,
-                   const char* minName, const char* maxName) {
+// The layer counts in the engine's terms (a technique without layers gets the march defaults).
+void stepLines(std::ostringstream& note, const Material& m, const char* minName,
+               const char* maxName) {
     const TechniqueInfo& t = info(m.technique);
     const TraceParams layers = t.usesLayers ? m.params : info(Technique::Pom).defaults;
-    note << "  " << scaleName << " = " << shortestDecimal(m.heightScale)
-         << "   (the relief's depth in uv units: h = 0 lies this far below the surface)\n"
-         << "  " << minName << " = " << layers.minLayers << ", " << maxName << " = "
+    note << "  " << minName << " = " << layers.minLayers << ", " << maxName << " = "
          << layers.maxLayers << "\n";
     if (!t.usesLayers)
         note << "  (the material uses '" << t.name
              << "', which the engine does not have: these are the layer-march defaults)\n";
+}
+
+// The parallax part of the notes: what the material asks for in the engine's terms.
+void parallaxLines(std::ostringstream& note, const Material& m, const char* scaleName,
+                   const char* minName, const char* maxName) {
+    note << "  " << scaleName << " = " << shortestDecimal(m.heightScale)
+         << "   (the relief's depth in uv units: h = 0 lies this far below the surface)\n";
+    stepLines(note, m, minName, maxName);
 }
 
 const char* wrapText(const Material& m) {
@@ -76,6 +82,9 @@ Status writeUnreal(ExportJob& job) {
                 "into the polygon), and\n";
         parallaxLines(note, m, "Height Ratio", "Min Steps", "Max Steps");
         note << "  Feed its Parallax UVs to every texture sample below.\n";
+        if (m.selfShadow)
+            note << "  Self-shadowing (on in the material) is not set up: the function's Shadow "
+                    "output, with the light vector in tangent space, is where Unreal has it.\n";
     } else {
         note << "  UVs = TexCoord[0] * " << shortestDecimal(m.tiling) << " (no parallax: technique "
              << info(m.technique).name << ").\n";
@@ -165,8 +174,14 @@ Status writeUnity(ExportJob& job) {
              << job.heightName(base + "_Height")
              << ", Parametrization = Amplitude,\n  Amplitude = " << shortestDecimal(m.heightScale)
              << " x the tile's size in centimetres (" << shortestDecimal(m.heightScale * 100.0f)
-             << " cm for a 1 m tile), Base = 1 (white lies on the surface),\n";
-        parallaxLines(note, m, "(height scale)", "Minimum Steps", "Maximum Steps");
+             << " cm for a 1 m tile), Base = 1 (white lies on the surface),\n"
+             << "  Primitive Length = Primitive Width = the tile's size in metres (1 for a 1 m "
+                "tile), Lock with height map tiling rate on:\n  HDRP divides the Amplitude by "
+                "the primitive size to get the depth in uv units, so both must match the mesh,\n";
+        stepLines(note, m, "Minimum Steps", "Maximum Steps");
+        if (m.selfShadow)
+            note << "  Self-shadowing (on in the material) is not exported: HDRP's pixel "
+                    "displacement has no self-shadow term (Depth Offset only moves depth).\n";
         note << "Built-in Standard / URP Lit (offset parallax only): Height Map = "
              << job.heightName(base + "_Height")
              << ", Height Scale = " << shortestDecimal(m.heightScale);

@@ -38,15 +38,16 @@ Status ExportJob::image(const std::string& name, const Image& pixels, PixelForma
     ImageWriteOptions write;
     write.format = format;
     write.srgb = srgb;
-    if (Status s = writeImage(folder.pathFor(name), pixels, write); !s)
-        return s;
+    const std::string staged = folder.pathFor(name);
+    if (Status s = writeImage(staged, pixels, write); !s)
+        return folder.asTarget(s.error());
     folder.add(name);
     return success();
 }
 
 Status ExportJob::text(const std::string& name, std::string_view contents) {
     if (Status s = writeTextFile(folder.pathFor(name), contents); !s)
-        return s;
+        return folder.asTarget(s.error());
     folder.add(name);
     return success();
 }
@@ -150,12 +151,13 @@ Result<ExportResult> exportMaterial(const Material& material, const std::string&
     }
     if (!written)
         return written.error(); // the staging folder goes with `folder`
-    Result<std::vector<std::string>> files = folder->commit(
+    Result<ExportFolder::Committed> committed = folder->commit(
         "export --format " + std::string(toString(options.format)) + " of " + material.name);
-    if (!files)
-        return files.error();
+    if (!committed)
+        return committed.error();
     result.folder = folder->target().string();
-    result.files = std::move(*files);
+    result.files = std::move(committed->files);
+    result.kept = std::move(committed->kept);
     return result;
 }
 

@@ -27,6 +27,10 @@ float godotHeightScale(float s) {
     return s * 100.0f;
 }
 
+// The ranges of BaseMaterial3D's inspector (heightmap_scale -16..16, layers 1..64).
+constexpr float kGodotScaleSlider = 16.0f;
+constexpr int kGodotLayersSlider = 64;
+
 } // namespace
 
 Status writeGodot(ExportJob& job) {
@@ -99,7 +103,24 @@ Status writeGodot(ExportJob& job) {
                                        " technique: exported as deep parallax with " +
                                        std::to_string(layers.minLayers) + " to " +
                                        std::to_string(layers.maxLayers) + " layers");
+        // Godot offsets by the normalised view vector (sin θ) where the material's relief
+        // needs tan θ: the apparent depth is cos θ of the material's.
+        job.result.notes.push_back(
+            "Godot offsets by sin θ of the view angle, not tan θ: heightmap_scale = " +
+            formatDecimal(godotHeightScale(m.heightScale)) +
+            " matches the material looking straight down; the relief looks shallower towards "
+            "grazing angles (cos θ of its depth: half at 60°)");
+        const float scale = godotHeightScale(m.heightScale);
+        if (scale > kGodotScaleSlider || (deep && layers.maxLayers > kGodotLayersSlider))
+            job.result.notes.push_back(
+                "Godot's inspector sliders stop at heightmap_scale " +
+                std::to_string(static_cast<int>(kGodotScaleSlider)) + " and " +
+                std::to_string(kGodotLayersSlider) +
+                " layers: the .tres keeps the exported values, but moving the slider clamps them");
     }
+    if (m.selfShadow)
+        job.result.notes.push_back("self-shadowing is not exported: Godot's StandardMaterial3D "
+                                   "has no parallax self-shadow");
     props << "uv1_scale = Vector3(" << real(shortestDecimal(m.tiling)) << ", "
           << real(shortestDecimal(m.tiling)) << ", 1.0)\n"
           << "texture_repeat = " << (m.wrap == WrapMode::Repeat ? "true" : "false") << "\n";
