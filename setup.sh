@@ -15,6 +15,7 @@ packages=(
   desktop-file-utils appstream
   xvfb xauth fonts-dejavu-core
   libgl1-mesa-dri libegl1 libegl-dev libgles-dev mesa-utils glslang-tools
+  clang-format clang-tidy
 )
 
 missing=()

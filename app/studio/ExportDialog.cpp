@@ -86,7 +86,12 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
         const Result<ExportResult> result = m_watcher.result();
         m_export->setEnabled(true);
         if (!result) {
-            m_result->setText(QString::fromStdString(result.error().message));
+            // The core speaks the command line's language; here the option is a check box.
+            QString message = QString::fromStdString(result.error().message);
+            message.replace(QStringLiteral("use --force to replace it"),
+                            tr("tick \"%1\" to replace it").arg(m_force->text()));
+            message.replace(QStringLiteral("even with --force"), tr("even when asked to"));
+            m_result->setText(message);
             emit exportFinished(false);
             return;
         }

@@ -221,13 +221,14 @@ float pxTraceStraightDown(vec2 uv0) {
 
 // The offset a ray may travel is bounded (docs/techniques.md: never divide by a z that can be 0):
 // grazing views reach the bound instead of infinity, and NaN becomes a straight-down view. The
-// bound is on the length, so the direction (the azimuth) is kept; an infinite component gives
-// the direction of its sign.
+// bound is on the length, so the direction (the azimuth) is kept; infinite components give the
+// direction of their signs, at the bound.
 #define PX_MAX_PARALLAX 1.0e4f
 vec2 pxBoundParallax(vec2 P) {
     vec2 q = vec2(isnan(P.x) ? 0.0f : P.x, isnan(P.y) ? 0.0f : P.y);
     if (isinf(q.x) || isinf(q.y))
-        q = vec2(isinf(q.x) ? sign(q.x) : 0.0f, isinf(q.y) ? sign(q.y) : 0.0f);
+        q = vec2(isinf(q.x) ? sign(q.x) * PX_MAX_PARALLAX : 0.0f,
+                 isinf(q.y) ? sign(q.y) * PX_MAX_PARALLAX : 0.0f);
     float big = max(abs(q.x), abs(q.y));
     if (big <= PX_MAX_PARALLAX * 0.5f)
         return q; // well inside the bound (and length() cannot overflow)

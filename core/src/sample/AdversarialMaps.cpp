@@ -29,7 +29,8 @@ float latticeNoise(const std::vector<float>& lattice, int cells, float u, float 
     const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
     const float fx = x - x0, fy = y - y0;
     auto at = [&](int i, int j) {
-        return lattice[static_cast<std::size_t>((j % cells) * cells + (i % cells))];
+        return lattice[static_cast<std::size_t>(j % cells) * static_cast<std::size_t>(cells) +
+                       static_cast<std::size_t>(i % cells)];
     };
     return (at(x0, y0) * (1 - fx) + at(x0 + 1, y0) * fx) * (1 - fy) +
            (at(x0, y0 + 1) * (1 - fx) + at(x0 + 1, y0 + 1) * fx) * fy;

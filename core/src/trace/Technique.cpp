@@ -75,10 +75,9 @@ long long fetchCap(Technique t, const TraceParams& p, long long rayCells) {
     // The cone marches and the pyramid end with at most one exact walk over part of the ray.
     case Technique::Cone:
         return p.maxSteps + rayCells; // one gather of the cell's corner cones per step
-    case Technique::RelaxedCone:
-        return 2LL * p.maxSteps + rayCells; // a sample and a cell solve per step
-    case Technique::Pyramid:
-        return 2LL * p.maxSteps + rayCells; // a node and a cell solve per step
+    case Technique::RelaxedCone:      // a cone sample and a cell solve per step
+    case Technique::Pyramid:          // a node and a cell solve per step
+        return 2LL * p.maxSteps + rayCells;
     case Technique::Exact:
         return p.maxSteps; // one gather per cell
     }

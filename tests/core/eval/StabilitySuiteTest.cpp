@@ -43,10 +43,34 @@ void StabilitySuiteTest::theIssuesCasesAreThere() {
     std::set<std::string_view> names;
     for (const StabilityCaseInfo& c : stabilityCases())
         names.insert(c.name);
-    for (std::string_view required :
-         {"polar-89.9", "scale-0", "tiny-scale", "huge-scale", "flat-0", "flat-1", "checkerboard",
-          "needles", "vertical-steps", "thin-cracks", "1x1", "non-power-of-two", "uv0-near-4096",
-          "zero-cones", "nan-in-float-map", "foreign-cone-map"})
+    for (std::string_view required : {"polar-89.9",
+                                      "scale-0",
+                                      "tiny-scale",
+                                      "huge-scale",
+                                      "flat-0",
+                                      "flat-1",
+                                      "checkerboard",
+                                      "needles",
+                                      "vertical-steps",
+                                      "thin-cracks",
+                                      "1x1",
+                                      "non-power-of-two",
+                                      "uv0-near-4096",
+                                      "zero-cones",
+                                      "nan-in-float-map",
+                                      "foreign-cone-map",
+                                      "adversarial-spike-flat",
+                                      "adversarial-walls",
+                                      "adversarial-treads",
+                                      "adversarial-pits",
+                                      "adversarial-terraces",
+                                      "adversarial-outliers",
+                                      "adversarial-spike-flat-clamp",
+                                      "adversarial-walls-clamp",
+                                      "adversarial-treads-clamp",
+                                      "adversarial-pits-clamp",
+                                      "adversarial-terraces-clamp",
+                                      "adversarial-outliers-clamp"})
         QVERIFY2(names.count(required) == 1, required.data());
 }
 

@@ -271,6 +271,7 @@ void GlslUnitTest::reachability() {
     std::set<std::string> outside;
     const std::vector<const GlslItem*> reached = reachableItems(*items, {"main"}, outside);
     std::vector<GlslItem> copies;
+    copies.reserve(reached.size());
     for (const GlslItem* item : reached)
         copies.push_back(*item);
     QCOMPARE(namesOf(copies), kept);
