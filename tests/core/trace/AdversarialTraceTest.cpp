@@ -103,9 +103,11 @@ void AdversarialTraceTest::mapsFollowTheSeed() {
         const char* name = proceduralMapNames()[static_cast<std::size_t>(c.map)].data();
         const HeightField a = makeProceduralMap(c.map, c.width, c.height, m_seed);
         QVERIFY2(a.texels == makeProceduralMap(c.map, c.width, c.height, m_seed).texels, name);
-        if (c.map != ProceduralMap::Checker)
-            QVERIFY2(a.texels != makeProceduralMap(c.map, c.width, c.height, m_seed + 1).texels,
-                     name);
+        // Another seed gives another map (a few seeds: 48 texels hold few sets of treads).
+        bool differs = c.map == ProceduralMap::Checker;
+        for (unsigned k = 1; k <= 8 && !differs; ++k)
+            differs = a.texels != makeProceduralMap(c.map, c.width, c.height, m_seed + k).texels;
+        QVERIFY2(differs, name);
         for (float h : a.texels)
             QVERIFY2(h >= 0.0f && h <= 1.0f, name);
     }
