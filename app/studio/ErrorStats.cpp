@@ -15,8 +15,8 @@ SurfaceErrors compareSurfaces(const Image& hits, const Image& exact, int mapWidt
     if (hits.width != exact.width || hits.height != exact.height || hits.channels < 4 ||
         exact.channels < 4)
         return out;
-    std::vector<double> errors;
-    double fetches = 0.0;
+    // The bench's statistics (HitErrorStats.h), so the readout and the bench agree on a view.
+    HitErrorAccumulator pooled;
     for (int y = 0; y < hits.height; ++y) {
         for (int x = 0; x < hits.width; ++x) {
             const float t = hits.at(x, y, 2), te = exact.at(x, y, 2);
@@ -26,19 +26,16 @@ SurfaceErrors compareSurfaces(const Image& hits, const Image& exact, int mapWidt
             const double dv = (double(hits.at(x, y, 1)) - exact.at(x, y, 1)) * mapHeight;
             const double e = std::hypot(du, dv);
             out.error[static_cast<std::size_t>(y) * hits.width + x] = static_cast<float>(e);
-            errors.push_back(e);
-            fetches += hits.at(x, y, 3);
+            pooled.addError(e, static_cast<int>(std::lround(hits.at(x, y, 3))));
         }
     }
-    out.pixels = static_cast<int>(errors.size());
-    if (errors.empty())
-        return out;
-    double sum = 0.0;
-    for (double e : errors)
-        sum += e;
-    out.meanError = sum / errors.size();
-    out.meanFetches = fetches / errors.size();
-    out.p99Error = nearestRankPercentile(errors, 0.99);
+    const HitErrorStats stats = pooled.stats();
+    out.pixels = static_cast<int>(stats.rays);
+    out.meanError = stats.meanError;
+    out.p99Error = stats.p99Error;
+    out.maxError = stats.maxError;
+    out.otherSurface = static_cast<int>(stats.wrongSurface);
+    out.meanFetches = stats.meanFetches;
     return out;
 }
 

@@ -16,6 +16,8 @@ struct SurfaceErrors {
     std::vector<float> error; // per pixel, texels; negative: not on the surface
     double meanError = 0.0;
     double p99Error = 0.0; // nearest rank
+    double maxError = 0.0; // every pixel: a few pixels on another surface lift the mean over p99
+    int otherSurface = 0;  // pixels whose hit is more than kWrongSurfaceTexels from the exact one
     double meanFetches = 0.0;
     int pixels = 0;
 };

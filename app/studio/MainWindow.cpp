@@ -23,11 +23,11 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QScrollArea>
-#include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QUndoView>
 #include <QVBoxLayout>
+#include <algorithm>
 
 // The icons live in the studio library's resources: a static library needs them registered.
 static void initStudioResources() {
@@ -43,10 +43,10 @@ QScrollArea* scrolled(QWidget* content) {
     area->setWidget(content);
     area->setWidgetResizable(true);
     area->setFrameShape(QFrame::NoFrame);
-    area->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    // Never narrower than the panel: nothing is cut off on the right, at any scale factor.
-    area->setMinimumWidth(content->sizeHint().width() +
-                          area->verticalScrollBar()->sizeHint().width());
+    // On a small screen (1280 x 720, or 1920 x 1080 at scale 2) the panel may be narrower than
+    // its content: it scrolls both ways rather than pushing the window past the screen.
+    area->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+    area->setMinimumWidth(std::min(content->sizeHint().width(), 220));
     return area;
 }
 

@@ -59,7 +59,7 @@ public:
     bool loadMap(MapKind kind, const QString& path, bool depth = false);
     // A folder or files holding a texture set with a height map become a new material named after
     // the set; `set` chooses where there are several (empty: ask, or refuse when not interactive).
-    // Files without a height map add to the material being edited.
+    // Files without a height map, or a single file, add to the material being edited.
     bool importFolder(const QString& folder, const QString& set = {});
     bool importFiles(const QStringList& paths, const QString& set = {}); // what a drop does
     // The last import's summary (hidden when not interactive; tests read and click it).

@@ -163,9 +163,12 @@ bool MainWindow::importFiles(const QStringList& paths, const QString& set) {
     std::vector<std::string> files;
     for (const QString& p : paths)
         files.push_back(p.toStdString());
-    // One image with no known suffix: a height map is what this editor is about.
-    if (paths.size() == 1 && textureSetNames(files).empty())
-        return loadMap(MapKind::Height, paths.front());
+    // One image is one map of the material being edited (an undoable step), known by its
+    // suffix; with no known suffix, the height map: that is what this editor is about.
+    if (paths.size() == 1) {
+        const std::optional<SuffixMatch> match = mapKindFromFileName(files.front());
+        return loadMap(match ? match->kind : MapKind::Height, paths.front());
+    }
     return importSet(files, paths.size() == 1 ? paths.front() : tr("the dropped files"), set);
 }
 

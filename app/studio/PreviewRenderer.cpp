@@ -196,6 +196,8 @@ Result<PreviewStats> PreviewRenderer::measure(const PreviewScene& scene, QSize p
     stats.fetchesPerPixel = errors.meanFetches;
     stats.meanError = errors.meanError;
     stats.p99Error = errors.p99Error;
+    stats.maxError = errors.maxError;
+    stats.otherSurface = errors.otherSurface;
     stats.pixels = errors.pixels;
     stats.valid = true;
     m_heatMap = scene.overlays.heatMap ? heatMapImage(errors) : QImage();

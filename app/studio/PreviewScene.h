@@ -23,7 +23,9 @@ struct PreviewStats {
     double fetchesPerPixel = 0.0; // mean height fetches over the surface's pixels
     double meanError = 0.0;       // texels, against the exact intersection, same pixels
     double p99Error = 0.0;
-    int pixels = 0; // pixels the figures are over (0: none measured yet)
+    double maxError = 0.0;
+    int otherSurface = 0; // pixels on another surface than the exact one (> 2 texels off)
+    int pixels = 0;       // pixels the figures are over (0: none measured yet)
     bool valid = false;
 };
 

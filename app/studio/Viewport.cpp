@@ -71,7 +71,10 @@ Viewport::Viewport(int index, MaterialDocument* document, const QString& liveRea
     m_stats->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_stats->setToolTip(tr("Frame time (CPU wall clock around the draw and glFinish), mean "
                            "height fetches per pixel, and the error of each pixel's hit against "
-                           "the exact intersection, in texels (mean and 99th percentile)."));
+                           "the exact intersection, in texels (mean, 99th percentile and max), "
+                           "and the share of pixels whose hit lies on another surface (more than "
+                           "2 texels from the exact one): a few such pixels lift the mean above "
+                           "the p99."));
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
@@ -186,10 +189,13 @@ void Viewport::showStats() {
     if (st.frameMs > 0)
         text += tr(" · %1 ms").arg(st.frameMs, 0, 'f', 1);
     if (st.valid && st.pixels > 0)
-        text += tr(" · %1 fetches/px<br>error vs exact: mean %2, p99 %3 texels")
+        text += tr(" · %1 fetches/px<br>error vs exact: mean %2, p99 %3, max %4 texels · %5 % on "
+                   "another surface")
                     .arg(st.fetchesPerPixel, 0, 'f', 1)
                     .arg(st.meanError, 0, 'f', 3)
-                    .arg(st.p99Error, 0, 'f', 3);
+                    .arg(st.p99Error, 0, 'f', 3)
+                    .arg(st.maxError, 0, 'f', 2)
+                    .arg(100.0 * st.otherSurface / st.pixels, 0, 'f', 2);
     else if (st.valid)
         text += tr("<br>no surface in view");
     else

@@ -36,37 +36,62 @@ Result<Image> convertNormalMap(const Image& normals, NormalGreen from, NormalGre
     return out;
 }
 
-Result<NormalGreen> detectNormalGreen(const Image& normals, const HeightField& field, WrapMode wrap,
-                                      const std::string& source) {
-    if (normals.empty() || normals.channels < 2)
-        return fileError(source, "a normal map needs at least red and green channels");
-    if (field.empty())
-        return Error{"the height map is empty"};
-    // Pearson correlation of green with dh/dv at the normal map's texel centres (OpenGL: n_y has
-    // the sign of +dh/dv).
-    double sg = 0, sd = 0, sgg = 0, sdd = 0, sgd = 0;
-    const double n = static_cast<double>(normals.width) * normals.height;
+namespace {
+
+struct Pearson {
+    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, n = 0;
+    void add(double a, double b) {
+        sa += a;
+        sb += b;
+        saa += a * a;
+        sbb += b * b;
+        sab += a * b;
+        n += 1;
+    }
+    double r() const {
+        if (n < 2)
+            return 0.0;
+        const double cov = sab / n - (sa / n) * (sb / n);
+        const double va = saa / n - (sa / n) * (sa / n), vb = sbb / n - (sb / n) * (sb / n);
+        return va > 1e-12 && vb > 1e-12 ? cov / std::sqrt(va * vb) : 0.0;
+    }
+};
+
+} // namespace
+
+SlopeCorrelation correlateWithSlopes(const Image& normals, const HeightField& field,
+                                     WrapMode wrap) {
+    if (normals.empty() || normals.channels < 2 || field.empty())
+        return {};
+    // Central differences of the height at each normal texel's centre (nearest height texel).
+    Pearson across, down;
     for (int y = 0; y < normals.height; ++y) {
         const int hy = static_cast<int>((y + 0.5) * field.height / normals.height);
         const int y0 = wrapIndex(hy - 1, field.height, wrap),
                   y1 = wrapIndex(hy + 1, field.height, wrap);
         for (int x = 0; x < normals.width; ++x) {
             const int hx = static_cast<int>((x + 0.5) * field.width / normals.width);
-            const double d = static_cast<double>(field.at(hx, y1)) - field.at(hx, y0);
-            const double g = normals.at(x, y, 1);
-            sg += g;
-            sd += d;
-            sgg += g * g;
-            sdd += d * d;
-            sgd += g * d;
+            const int x0 = wrapIndex(hx - 1, field.width, wrap),
+                      x1 = wrapIndex(hx + 1, field.width, wrap);
+            across.add(normals.at(x, y, 0),
+                       -(static_cast<double>(field.at(x1, hy)) - field.at(x0, hy)));
+            down.add(normals.at(x, y, 1), static_cast<double>(field.at(hx, y1)) - field.at(hx, y0));
         }
     }
-    const double cov = sgd / n - (sg / n) * (sd / n);
-    const double vg = sgg / n - (sg / n) * (sg / n), vd = sdd / n - (sd / n) * (sd / n);
-    if (vg <= 1e-12 || vd <= 1e-12)
+    return {across.r(), down.r()};
+}
+
+Result<NormalGreen> detectNormalGreen(const Image& normals, const HeightField& field, WrapMode wrap,
+                                      const std::string& source) {
+    if (normals.empty() || normals.channels < 2)
+        return fileError(source, "a normal map needs at least red and green channels");
+    if (field.empty())
+        return Error{"the height map is empty"};
+    // OpenGL: n_y has the sign of +dh/dv.
+    const double r = correlateWithSlopes(normals, field, wrap).down;
+    if (r == 0.0)
         return fileError(source, "cannot tell the green convention: the normal map or the height "
                                  "map is flat");
-    const double r = cov / std::sqrt(vg * vd);
     if (std::abs(r) < 0.05) {
         char text[160];
         std::snprintf(text, sizeof text,

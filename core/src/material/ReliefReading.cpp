@@ -1,5 +1,7 @@
 #include "parallax/material/ReliefReading.h"
 
+#include "parallax/bake/NormalMapBaker.h"
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -11,25 +13,6 @@ namespace {
 
 // Below this a slope correlation says nothing (noise, or another set's normal map).
 constexpr double kTellable = 0.2;
-
-struct Pearson {
-    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, n = 0;
-    void add(double a, double b) {
-        sa += a;
-        sb += b;
-        saa += a * a;
-        sbb += b * b;
-        sab += a * b;
-        n += 1;
-    }
-    double r() const {
-        if (n < 2)
-            return 0.0;
-        const double cov = sab / n - (sa / n) * (sb / n);
-        const double va = saa / n - (sa / n) * (sa / n), vb = sbb / n - (sb / n) * (sb / n);
-        return va > 1e-12 && vb > 1e-12 ? cov / std::sqrt(va * vb) : 0.0;
-    }
-};
 
 std::string fileName(const std::string& path) {
     return std::filesystem::path(path).filename().string();
@@ -47,27 +30,14 @@ Result<ReliefReading> readRelief(const HeightField& file, const Image& normals, 
         return fileError(normalSource, "a normal map needs at least red and green channels");
     if (file.empty())
         return Error{"the height map is empty"};
-    // Central differences of the height file at each normal texel's centre (nearest height texel).
-    Pearson u, v;
-    for (int y = 0; y < normals.height; ++y) {
-        const int hy = static_cast<int>((y + 0.5) * file.height / normals.height);
-        const int y0 = wrapIndex(hy - 1, file.height, wrap),
-                  y1 = wrapIndex(hy + 1, file.height, wrap);
-        for (int x = 0; x < normals.width; ++x) {
-            const int hx = static_cast<int>((x + 0.5) * file.width / normals.width);
-            const int x0 = wrapIndex(hx - 1, file.width, wrap),
-                      x1 = wrapIndex(hx + 1, file.width, wrap);
-            u.add(normals.at(x, y, 0), -(double(file.at(x1, hy)) - file.at(x0, hy)));
-            v.add(normals.at(x, y, 1), double(file.at(hx, y1)) - file.at(hx, y0));
-        }
-    }
+    const SlopeCorrelation slopes = correlateWithSlopes(normals, file, wrap);
     ReliefReading reading;
-    reading.slopeU = u.r();
-    reading.slopeV = v.r();
+    reading.slopeU = slopes.across;
+    reading.slopeV = slopes.down;
     if (std::abs(reading.slopeU) < kTellable && std::abs(reading.slopeV) < kTellable) {
         reading = reliefByName(depthByName, "");
-        reading.slopeU = u.r();
-        reading.slopeV = v.r();
+        reading.slopeU = slopes.across;
+        reading.slopeV = slopes.down;
         char text[256];
         std::snprintf(text, sizeof text,
                       "The normal map's slopes do not follow the height map's (r = %.2f across, "

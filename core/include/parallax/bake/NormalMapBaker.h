@@ -51,6 +51,16 @@ Result<Image> bakeNormalMap(const HeightField& field, const NormalBakeOptions& o
 Result<Image> convertNormalMap(const Image& normals, NormalGreen from, NormalGreen to,
                                const std::string& source);
 
+// Pearson correlations of a normal map (n * 0.5 + 0.5) with the slopes of a height map (white =
+// high) at the normal map's texel centres: red with -dh/du ("across") and green with +dh/dv
+// ("down"). Both are positive for the map's own normal map under OpenGL green; a depth map flips
+// both, DirectX green flips "down". 0 where either side is constant; sizes may differ.
+struct SlopeCorrelation {
+    double across = 0.0;
+    double down = 0.0;
+};
+SlopeCorrelation correlateWithSlopes(const Image& normals, const HeightField& field, WrapMode wrap);
+
 // Tells a loaded normal map's green convention from the height map it belongs to: under the right
 // convention its green correlates positively with the height map's slope (docs/conventions.md §3).
 // Sizes may differ. Errors name `source`: too few channels, or no slope to tell by (a flat map).
