@@ -62,7 +62,7 @@ void FaultInputsTest::outputIsAnInput_data() {
     QTest::newRow("render") << QStringList{"render", "--height", "h.png", "--out", "h.png"}
                             << "h.png";
     QTest::newRow("render albedo")
-        << QStringList{"render",   "--height", "h.png",        "--albedo",
+        << QStringList{"render",   "--height", "h.png",          "--albedo",
                        "hard.png", "--out",    "sub/../hard.png"}
         << "hard.png";
     QTest::newRow("bench --out") << QStringList{"bench", "--height", "h.png", "--out", "h.png"}

@@ -1,9 +1,9 @@
 #pragma once
 // How to read a texture set's relief: is its height file a height map or a depth map, and which
 // way does its normal map's green point? `_disp` files are depth maps in some sets and height maps
-// in others, and tools disagree on green (docs/conventions.md §2, §3), so a file name cannot say. When a
-// normal map is there, the data can: under the right reading the normal map's slopes follow the
-// height map's (red with -dh/du, green with +dh/dv in OpenGL convention). The four readings
+// in others, and tools disagree on green (docs/conventions.md §2, §3), so a file name cannot say.
+// When a normal map is there, the data can: under the right reading the normal map's slopes follow
+// the height map's (red with -dh/du, green with +dh/dv in OpenGL convention). The four readings
 // (height or depth × OpenGL or DirectX green) are scored and the most consistent is kept.
 
 #include "parallax/Result.h"

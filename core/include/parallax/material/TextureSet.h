@@ -2,9 +2,9 @@
 // Which of a folder's files (or of a drop of files) make one texture set, and what each one is.
 //
 // A set is named by the stem its files share: "bricks2_disp.jpg" and "bricks2_normal.jpg" are the
-// set "bricks2" (the role suffixes of docs/conventions.md §6, compared case-insensitively). A file with no
-// role suffix whose name is the set's own ("bricks2.jpg") is its albedo. Every other file is
-// listed as ignored with the reason, never silently dropped, and two sets are never mixed.
+// set "bricks2" (the role suffixes of docs/conventions.md §6, compared case-insensitively). A file
+// with no role suffix whose name is the set's own ("bricks2.jpg") is its albedo. Every other file
+// is listed as ignored with the reason, never silently dropped, and two sets are never mixed.
 
 #include "parallax/Result.h"
 #include "parallax/material/MapKind.h"
