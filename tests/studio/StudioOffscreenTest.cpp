@@ -86,6 +86,11 @@ private slots:
         QVERIFY(compare->cancelButton()->isEnabled());
         QVERIFY(finished.wait(120000));
         QVERIFY(compare->chart().has_value());
+        // GPU milliseconds measured on this machine's GL (llvmpipe on CI): a third cost panel,
+        // which exists only when every pooled point was timed.
+        QCOMPARE(compare->chart()->axes.back(), CostAxis::GpuTime);
+        QCOMPARE(compare->axisCombo()->count(), 3);
+        QVERIFY(compare->statusText().contains("GPU: ")); // the renderer and timing method
         WorkPrecisionView* view = compare->chartView();
         QVERIFY(view->hasPanel());
         view->resize(700, 400);

@@ -11,6 +11,7 @@ static_assert(kTechniqueCount <= 16, "the technique takes 4 bits of a variant ke
 
 constexpr std::array<std::string_view, 4> kNormalSourceNames{"none", "map", "central", "sobel"};
 constexpr std::array<std::string_view, 2> kLightingNames{"blinn-phong", "metallic-roughness"};
+constexpr std::array<std::string_view, 2> kFlavourNames{"production", "verify"};
 
 } // namespace
 
@@ -24,6 +25,7 @@ std::uint32_t VariantKey::bits() const {
     b |= (lighting == LightingModel::MetallicRoughness ? 1u : 0u) << 10;
     b |= (tbn == TbnSource::Derivatives ? 1u : 0u) << 11;
     b |= static_cast<std::uint32_t>(output) << 12;
+    b |= (flavour == KernelFlavour::Verify ? 1u : 0u) << 14;
     return b;
 }
 
@@ -44,6 +46,7 @@ std::optional<VariantKey> VariantKey::fromBits(std::uint32_t b) {
     k.lighting = (b >> 10) & 1u ? LightingModel::MetallicRoughness : LightingModel::BlinnPhong;
     k.tbn = (b >> 11) & 1u ? TbnSource::Derivatives : TbnSource::VertexTangents;
     k.output = static_cast<ShaderOutput>(output);
+    k.flavour = (b >> 14) & 1u ? KernelFlavour::Verify : KernelFlavour::Production;
     return k;
 }
 
@@ -91,6 +94,8 @@ std::string VariantKey::name() const {
         n += "+surface";
     else if (output == ShaderOutput::Trace)
         n += "+trace";
+    if (flavour == KernelFlavour::Verify)
+        n += "+verify";
     return n;
 }
 
@@ -114,8 +119,10 @@ VariantKey canonical(VariantKey k) {
         k.wrap == WrapMode::Repeat)
         k.technique =
             Technique::None; // nothing reads the hit (no map, no discard): it draws as none
-    if (!k.readsHeightMap())
+    if (!k.readsHeightMap()) {
         k.wrap = WrapMode::Repeat; // the other maps' wrap is sampler state, not shader code
+        k.flavour = KernelFlavour::Production; // the flavours differ only in height and cone reads
+    }
     return k;
 }
 
@@ -169,6 +176,18 @@ std::optional<LightingModel> parseLightingModel(std::string_view name) {
 
 std::string_view lightingModelName(LightingModel model) {
     return kLightingNames.at(static_cast<std::size_t>(model));
+}
+
+std::optional<KernelFlavour> parseKernelFlavour(std::string_view name) {
+    for (std::size_t i = 0; i < kFlavourNames.size(); ++i) {
+        if (kFlavourNames[i] == name)
+            return static_cast<KernelFlavour>(i);
+    }
+    return std::nullopt;
+}
+
+std::string_view kernelFlavourName(KernelFlavour flavour) {
+    return kFlavourNames.at(static_cast<std::size_t>(flavour));
 }
 
 } // namespace shader
