@@ -11,10 +11,11 @@ packages=(
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-svg-dev qt6-qpa-plugins
   libglm-dev libopenimageio-dev openimageio-tools
   nlohmann-json3-dev libcli11-dev libtbb-dev libbenchmark-dev
-  libplplot-dev
+  libplplot-dev libpng-dev
   desktop-file-utils appstream
   xvfb xauth fonts-dejavu-core
   libgl1-mesa-dri libegl1 libegl-dev libgles-dev mesa-utils glslang-tools
+  clang-format clang-tidy
 )
 
 missing=()
@@ -45,7 +46,7 @@ case "$mode" in
     if [ -x "$build/app/studio/parallax-studio" ]; then
       exec "$build/app/studio/parallax-studio" "${@:2}"
     fi
-    # Until the editor lands: trace the built-in sample with every technique.
+    # Built without the editor (-DPX_BUILD_STUDIO=OFF): trace the built-in sample instead.
     "$build/app/cli/parallax-cli" sample bricks --size 256 --out "$build/bricks.png"
     "$build/app/cli/parallax-cli" trace --height "$build/bricks.png" --scale 0.05 --polar 60 \
       --azimuth 35 --rays 64 --technique pyramid --out "$build/bricks-trace.csv"

@@ -1,4 +1,5 @@
-# Every third-party package the project uses, found once. See ../shared/docs/PLATFORM.md.
+# Every third-party package the project uses, found once (docs/platform.md). A new one is also
+# added to the package list in setup.sh.
 find_package(OpenImageIO CONFIG REQUIRED)
 # Debian 12's OpenImageIO config names a non-existent /usr/include/opencv4: drop it.
 foreach(_t OpenImageIO::OpenImageIO OpenImageIO::OpenImageIO_Util)
@@ -15,6 +16,8 @@ find_package(nlohmann_json 3.10 CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(TBB CONFIG REQUIRED)
 find_package(Threads REQUIRED)
+# libpng: the tests decode exported PNGs the way engines do (gamma-aware).
+find_package(PNG REQUIRED)
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Test Concurrent Svg)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
 find_package(benchmark CONFIG)

@@ -1,10 +1,11 @@
-// parallax-cli trace: the canonical scene of CONVENTIONS §5 with one technique, as CSV.
+// parallax-cli trace: the canonical scene of docs/conventions.md §5 with one technique, as CSV.
 
 #include "Cli.h"
 #include "CommonOptions.h"
 #include "GpuTracer.h"
 #include "parallax/eval/HitErrorStats.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/trace/ParallaxBound.h"
 #include "parallax/trace/TraceScene.h"
 
 #include <cstdio>
@@ -78,6 +79,9 @@ int runTrace(const TraceOptions& o) {
     scene.azimuthDeg = o.azimuth;
     if (Status s = validate(scene); !s)
         return fail(s.error().message);
+    if (const BoundedParallax b = boundParallax(parallaxVector(o.scale, o.polar, o.azimuth));
+        !b.note.empty())
+        std::cerr << "note: " << b.note << "\n";
 
     Result<HeightField> field = o.height.load();
     if (!field)

@@ -1,6 +1,6 @@
 #pragma once
 // Timing GL work. On llvmpipe (and other CPU rasterisers) GL timer queries are meaningless
-// (../shared/docs/PLATFORM.md): there a steady clock brackets the work with glFinish before and
+// (docs/platform.md): there a steady clock brackets the work with glFinish before and
 // after. On real GPUs a GL_TIME_ELAPSED query measures the GPU time of the work itself.
 
 #include "GlInfo.h"

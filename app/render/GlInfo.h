@@ -19,7 +19,7 @@ struct GlInfo {
     // Mesa's llvmpipe/softpipe and other CPU rasterisers.
     bool software() const;
     // GL timer queries measure GPU time only on real GPUs: on llvmpipe they read about 1 ms for
-    // 30-240 ms of work (../shared/docs/PLATFORM.md). Time with a steady clock around glFinish
+    // 30-240 ms of work (docs/platform.md). Time with a steady clock around glFinish
     // there.
     bool timerQueriesMeaningful() const;
     // "OpenGL 4.5 (Core Profile) Mesa 22.3.6, llvmpipe (LLVM 15.0.6, 256 bits)".

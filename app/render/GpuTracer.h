@@ -1,5 +1,5 @@
 #pragma once
-// The canonical trace scene (CONVENTIONS §5) on the GPU: one fragment per ray into an R x R
+// The canonical trace scene (docs/conventions.md §5) on the GPU: one fragment per ray into an R x R
 // RGBA32F target holding (u, v, t, fetches), the same kernels as the CPU Tracer (shaders/trace/).
 // Heights go up as R32F and cone maps as RG32F, the CPU's floats unchanged, so both sides read the
 // same values: `parallax-cli trace --gpu` and the tests that hold GPU == CPU.

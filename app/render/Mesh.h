@@ -1,7 +1,7 @@
 #pragma once
 // The preview meshes, with the tangent frame the shaders need: T = dP/du and B = dP/dv at full
-// length (world units per uv unit), N the outward normal (CONVENTIONS §2). uv follows glTF: v runs
-// down the image, so on every mesh the image reads upright from outside.
+// length (world units per uv unit), N the outward normal (docs/conventions.md §2). uv follows glTF:
+// v runs down the image, so on every mesh the image reads upright from outside.
 //   plane    2 x 2 in the xz plane, normal +y, u along +x, v along +z
 //   cube     side 1.5, each face one tile
 //   sphere   radius 1, u around (two tiles, so texels stay about square at the equator), v pole

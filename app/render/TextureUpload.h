@@ -1,6 +1,7 @@
 #pragma once
 // Turning the core's maps into GL textures. Rows go up in file order (row 0 = v 0, the top of the
-// image) and texelFetch(x, y) reads texel (x, y) as the core counts it: no flip (CONVENTIONS §1).
+// image) and texelFetch(x, y) reads texel (x, y) as the core counts it: no flip
+// (docs/conventions.md §1).
 
 #include "GlObjects.h"
 #include "parallax/Result.h"

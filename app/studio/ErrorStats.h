@@ -1,8 +1,8 @@
 #pragma once
 // A view's error against the exact intersection, from two surface renders of the same view: each
 // pixel holds (u, v, t, fetches) of its hit, t < 0 where no surface was drawn. The error is the
-// distance between the two hits in texels of the height map (CONVENTIONS §5), over the pixels
-// where both found the surface.
+// distance between the two hits in texels of the height map (docs/conventions.md §5), over the
+// pixels where both found the surface.
 
 #include "parallax/image/Image.h"
 

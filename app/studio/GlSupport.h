@@ -1,7 +1,7 @@
 #pragma once
 // Whether the live preview can run: OpenGL 4.3 core on a platform that can show GL widgets.
-// Qt 6.4's offscreen platform crashes when a QOpenGLWidget is shown (PLATFORM.md), and a driver
-// below 4.3 cannot run the techniques; in both cases the editor shows a placeholder instead.
+// Qt 6.4's offscreen platform crashes when a QOpenGLWidget is shown (docs/platform.md), and a
+// driver below 4.3 cannot run the techniques; in both cases the editor shows a placeholder instead.
 
 #include <QString>
 

@@ -1,7 +1,7 @@
 #pragma once
-// What each control does, in the seeds' terms (height_scale, numLayers, u_parallax_quality, ...):
-// one place for the tooltips and status-bar hints, so the same control says the same thing in
-// every panel.
+// What each control does, in the terms of the tutorial shaders (height_scale, numLayers,
+// u_parallax_quality, ...): one place for the tooltips and status-bar hints, so the same control
+// says the same thing in every panel.
 
 #include "parallax/trace/Technique.h"
 

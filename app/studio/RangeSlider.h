@@ -1,7 +1,7 @@
 #pragma once
-// A slider with two handles for a range [low, high] within [0, 1]: the seeds' two-value quality
-// range. Drag a handle (or the bar between them); arrow keys move the low handle, Shift+arrows
-// the high one.
+// A slider with two handles for a range [low, high] within [0, 1]: the tutorial shaders' two-value
+// quality range. Drag a handle (or the bar between them); arrow keys move the low handle,
+// Shift+arrows the high one.
 
 #include <QWidget>
 

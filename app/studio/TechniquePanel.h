@@ -1,6 +1,6 @@
 #pragma once
 // The technique and quality of the active viewport (viewport 1's are the material's): layers,
-// the seeds' quality range, refinement steps and the step cap, each shown only where the
+// the tutorial shaders' quality range, refinement steps and the step cap, each shown only where the
 // technique reads it.
 
 #include "parallax/trace/Technique.h"
@@ -60,7 +60,7 @@ private:
     QPushButton* m_useForMaterial;
 };
 
-// The seeds' quality (seed 000: numSteps = clamp(quality * 50, 1, 50)) and layers.
+// The tutorial shaders' quality (numSteps = clamp(quality * 50, 1, 50)) and layers.
 int layersForQuality(double quality);
 double qualityForLayers(int layers);
 

@@ -22,7 +22,7 @@ float pxHeightTexel(ivec2 texel) {
     return texelFetch(pxHeightMap, texel, pxHeightLevel).r;
 }
 
-// Cone maps are RG32F: R the height, G sqrt(cone ratio) (CONVENTIONS §4).
+// Cone maps are RG32F: R the height, G sqrt(cone ratio) (docs/conventions.md §4).
 vec2 pxConeTexel(ivec2 texel) {
     return texelFetch(pxConeMap, texel, 0).rg;
 }

@@ -3,7 +3,7 @@
 
 #define PX_PI 3.14159265f
 
-// Blinn-Phong as in the seeds: ambient + Lambert + the normalised specular lobe
+// Blinn-Phong as in the tutorial shaders: ambient + Lambert + the normalised specular lobe
 // (n + 2) / (2 pi) cos^n, here also weighted by N.L so that no highlight shows on the unlit side.
 vec3 pxBlinnPhong(vec3 n, vec3 v, vec3 l, vec3 albedo, float occlusion, float lightVisible) {
     float NdotL = max(dot(n, l), 0.0);

@@ -1,8 +1,8 @@
-// Shading a mesh with the variant's technique. The frame T = dP/du, B = dP/dv, N (CONVENTIONS §2)
-// comes from the vertex data or from screen-space derivatives; the view ray is taken into the
-// tangent space (uv, uv, depth in uv units) to get P = s d.xy / (-d.z); the shared kernel finds the
-// hit; normal, material and light are then read at the hit. The generator defines
-// PX_HAS_TANGENT_FRAME and PX_HAS_TEXTURE_COORDINATES when the variant needs them.
+// Shading a mesh with the variant's technique. The frame T = dP/du, B = dP/dv, N
+// (docs/conventions.md §2) comes from the vertex data or from screen-space derivatives; the view
+// ray is taken into the tangent space (uv, uv, depth in uv units) to get P = s d.xy / (-d.z); the
+// shared kernel finds the hit; normal, material and light are then read at the hit. The generator
+// defines PX_HAS_TANGENT_FRAME and PX_HAS_TEXTURE_COORDINATES when the variant needs them.
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -48,8 +48,9 @@ void main() {
     float Lw = sqrt(max(length(T) * length(B), 1.0e-20));
 #endif
 #if defined(PX_HAS_TEXTURE_COORDINATES)
-    // Derivatives of the un-offset uv, taken before any loop or discard (TECHNIQUES.md pitfalls):
-    // every texture read at the hit uses them, so the hit's discontinuities pick no wrong mip.
+    // Derivatives of the un-offset uv, taken before any loop or discard (docs/techniques.md, "How
+    // they fail"): every texture read at the hit uses them, so the hit's discontinuities pick no
+    // wrong mip.
     vec2 uvDx = dFdx(vUv);
     vec2 uvDy = dFdy(vUv);
     // Far from the origin float uv loses the texel: trace within the tile, keep the tile apart.
@@ -103,7 +104,7 @@ void main() {
     vec3 m = textureGrad(pxNormalMap, hit, uvDx, uvDy).xyz * 2.0 - 1.0;
     vec3 Tn = pxSafeNormalize(T - N * dot(N, T), vec3(0.0));
     vec3 Bn = pxSafeNormalize(B - N * dot(N, B), vec3(0.0));
-    // A normal map's +Y points up the image, B = dP/dv down it (CONVENTIONS §3).
+    // A normal map's +Y points up the image, B = dP/dv down it (docs/conventions.md §3).
     vec3 n = pxSafeNormalize(Tn * m.x - Bn * (m.y * pxNormalGreenSign) + N * m.z, N);
 #elif defined(PX_HAS_HEIGHT_NORMALS)
     pxUseHeightLevel(footprintLevel);

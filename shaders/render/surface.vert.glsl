@@ -1,5 +1,5 @@
-// Meshes: world-space position, normal, tiled uv and, unless the fragment shader derives its
-// frame from screen-space derivatives, the tangent frame T = dP/du, B = dP/dv (CONVENTIONS §2) at
+// Meshes: world-space position, normal, tiled uv and, unless the fragment shader derives its frame
+// from screen-space derivatives, the tangent frame T = dP/du, B = dP/dv (docs/conventions.md §2) at
 // full length: the lengths say how many world units one uv unit spans, which sets the depth scale.
 
 layout(location = 0) in vec3 aPosition;

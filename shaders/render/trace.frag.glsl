@@ -1,7 +1,7 @@
-// The canonical trace scene on the GPU (CONVENTIONS §5): pixel (i, j) of the R x R RGBA32F target
-// is ray (i, j). Its uv0 comes from pxRayOrigins (the CPU's float values, reduced to the tile as
-// Tracer::trace does), its direction P from pxRayP (bounded as on the CPU). Writes (u, v, t, fetches), u and v not wrapped
-// relative to the tile the ray entered.
+// The canonical trace scene on the GPU (docs/conventions.md §5): pixel (i, j) of the R x R RGBA32F
+// target is ray (i, j). Its uv0 comes from pxRayOrigins (the CPU's float values, reduced to the
+// tile as Tracer::trace does), its direction P from pxRayP (bounded as on the CPU). Writes (u, v,
+// t, fetches), u and v not wrapped relative to the tile the ray entered.
 
 layout(location = 0) out vec4 pxTraceOut;
 

@@ -1,5 +1,5 @@
-// Shared by every technique. Conventions: ../../../shared/CONVENTIONS.md §2 and §5; cell space
-// and the cell solve: CONE_MAPS.md ("cell coordinates X = uW - 1/2").
+// Shared by every technique. Conventions: docs/conventions.md §2 and §5; cell space
+// and the cell solve: docs/cone-maps.md, "Terms" (cell coordinates X = uW - 1/2).
 //
 // Bindings each side provides:
 //   ivec2 pxMapSize; bool pxWrapRepeat; float pxHeightMax; float pxScale;
@@ -10,6 +10,10 @@
 //   ivec2 pxMaxMipSize(int level); int pxMaxMipTop
 
 #define PX_BIG 1.0e30f
+
+// The most cells one exact walk may visit (kMaxStepsLimit): more than the rays of any view the
+// tracers accept cross, so a walk ends at its far end, not at this budget.
+#define PX_WALK_LIMIT 16777216
 
 // Marks values whose every operation both compilers must evaluate as written: GLSL compilers may
 // otherwise reassociate or fuse them (Mesa does), and the CPU and GPU would part ways in the last
@@ -84,8 +88,8 @@ float pxHeight(vec2 uv) {
 #endif
 }
 
-// One bilinear sample of the cone map: (height, cone ratio). G holds sqrt(ratio) (CONVENTIONS §4),
-// interpolated before squaring as a GPU sampler would.
+// One bilinear sample of the cone map: (height, cone ratio). G holds sqrt(ratio)
+// (docs/conventions.md §4), interpolated before squaring as a GPU sampler would.
 vec2 pxConeSample(vec2 uv) {
     pxFetches += 1;
 #if defined(PX_HAS_HARDWARE_SAMPLING)
@@ -121,13 +125,13 @@ float pxStartT() {
     return clamp(1.0f - pxHeightMax, 0.0f, 1.0f);
 }
 
-// cos of the polar angle, from P = s tan(theta) dir (CONVENTIONS §5).
+// cos of the polar angle, from P = s tan(theta) dir (docs/conventions.md §5).
 float pxCosTheta(vec2 P) {
     float tanTheta = pxScale > 0.0f ? length(P) / pxScale : 0.0f;
     return inversesqrt(1.0f + tanTheta * tanTheta);
 }
 
-// The seeds' quality range: maxLayers at grazing angles, minLayers looking straight down.
+// The tutorial shaders' quality range: maxLayers at grazing angles, minLayers looking straight down.
 int pxLayerCount(vec2 P) {
     float n = pxLerp(float(pxMaxLayers), float(pxMinLayers), pxCosTheta(P));
     return max(1, int(n + 0.5f));
@@ -227,10 +231,19 @@ float pxTraceStraightDown(vec2 uv0) {
     return 1.0f - pxHeight(uv0);
 }
 
-// The offset a ray may travel is bounded (TECHNIQUES.md: never divide by a z that can be 0):
-// grazing views reach the bound instead of infinity, and NaN becomes a straight-down view.
+// The offset a ray may travel is bounded (docs/techniques.md: never divide by a z that can be 0):
+// grazing views reach the bound instead of infinity, and NaN becomes a straight-down view. The
+// bound is on the length, so the direction (the azimuth) is kept; an infinite component gives
+// the direction of its sign.
 #define PX_MAX_PARALLAX 1.0e4f
 vec2 pxBoundParallax(vec2 P) {
-    return vec2(isnan(P.x) ? 0.0f : clamp(P.x, -PX_MAX_PARALLAX, PX_MAX_PARALLAX),
-                isnan(P.y) ? 0.0f : clamp(P.y, -PX_MAX_PARALLAX, PX_MAX_PARALLAX));
+    vec2 q = vec2(isnan(P.x) ? 0.0f : P.x, isnan(P.y) ? 0.0f : P.y);
+    if (isinf(q.x) || isinf(q.y))
+        q = vec2(isinf(q.x) ? sign(q.x) : 0.0f, isinf(q.y) ? sign(q.y) : 0.0f);
+    float big = max(abs(q.x), abs(q.y));
+    if (big <= PX_MAX_PARALLAX * 0.5f)
+        return q; // well inside the bound (and length() cannot overflow)
+    vec2 unit = q / big; // components in [-1, 1]: length() cannot overflow
+    float len = length(unit) * big;
+    return len > PX_MAX_PARALLAX ? unit * (PX_MAX_PARALLAX / length(unit)) : q;
 }

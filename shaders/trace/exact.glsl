@@ -1,5 +1,5 @@
 // `exact`: the reference. Walks every cell the ray crosses and solves the ray/bilinear-patch
-// quadratic in each: the first root is the hit (CONVENTIONS §2).
+// quadratic in each: the first root is the hit (docs/conventions.md §2).
 
 float pxTraceExact(vec2 uv0, vec2 P) {
     vec2 X0 = pxCellCoords(uv0);

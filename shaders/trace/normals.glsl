@@ -1,9 +1,9 @@
 // The height map's slope (dh/du, dh/dv) in uv units at a point, for normals derived from height
-// (CONVENTIONS §3: n ∝ (-s dh/du, +s dh/dv, 1) with a normal map's +Y up the image). Both filters
-// are derivative estimates from bilinear samples one texel apart: on a linear ramp each returns the
-// exact slope, so switching the filter never changes the strength.
+// (docs/conventions.md §3: n ∝ (-s dh/du, +s dh/dv, 1) with a normal map's +Y up the image). Both
+// filters are derivative estimates from bilinear samples one texel apart: on a linear ramp each
+// returns the exact slope, so switching the filter never changes the strength.
 
-// Central differences, 4 fetches (the seeds' "medium" variant).
+// Central differences, 4 fetches (the tutorials' "medium" variant).
 vec2 pxHeightSlopeCentral(vec2 uv) {
     float ex = 1.0f / float(pxMapSize.x);
     float ey = 1.0f / float(pxMapSize.y);

@@ -1,4 +1,4 @@
-// Soft self-shadowing towards the light (Tatarchuk 2006), traced from the hit point. The seeds'
+// Soft self-shadowing towards the light (Tatarchuk 2006), traced from the hit point. The tutorials'
 // version is "all black": it starts at the hit itself and never stops below the highest texel.
 // Here the light ray rises from the hit in pxMinLayers..pxMaxLayers even steps up to the highest
 // texel (nothing lies above it), and each sample's occluder is measured as the angle it rises

@@ -48,7 +48,7 @@ int covered(const Image& surface) {
     return n;
 }
 
-// A normal map baked from `field` at height scale s the way CONVENTIONS §3 says: central
+// A normal map baked from `field` at height scale s the way docs/conventions.md §3 says: central
 // differences in uv units, n ∝ (-s dh/du, +s dh/dv, 1), stored n / 2 + 1/2; green flipped for
 // DirectX.
 Image normalMapOf(const HeightField& field, float s, bool directX) {
@@ -110,8 +110,8 @@ void RendererTest::renderedHitsAreTheCpuTracersHits_data() {
 }
 
 // Each pixel's ray, computed here from the camera (pixel centre -> the plane y = 0 -> tangent
-// space, CONVENTIONS §2), traced by the CPU Tracer: the renderer's hit (surface output) is the
-// same point. This pins the sign and scale of P in the render path, which the trace pass skips.
+// space, docs/conventions.md §2), traced by the CPU Tracer: the renderer's hit (surface output) is
+// the same point. This pins the sign and scale of P in the render path, which the trace pass skips.
 void RendererTest::renderedHitsAreTheCpuTracersHits() {
     QFETCH(int, technique);
     QFETCH(float, tiling);
@@ -176,8 +176,8 @@ void RendererTest::renderedHitsAreTheCpuTracersHits() {
             QString("%1 of %2 pixels fetch as the CPU does").arg(sameFetches).arg(errors.size())));
 }
 
-// A normal map baked from the heights (CONVENTIONS §3) shades like normals derived in the shader;
-// a DirectX map read as DirectX too; read as OpenGL it does not (the test can fail).
+// A normal map baked from the heights (docs/conventions.md §3) shades like normals derived in the
+// shader; a DirectX map read as DirectX too; read as OpenGL it does not (the test can fail).
 void RendererTest::normalMapAndHeightNormalsAgree() {
     MaterialAssets assets;
     assets.height = makeProceduralMap(ProceduralMap::Noise, 64, 64, 2);

@@ -8,7 +8,8 @@
 
 namespace px::test {
 
-// A file under ../shared/testdata/ (third-party images, conformance tests only).
+// A file under PX_SHARED_DIR/testdata/ (third-party images, conformance tests only; see
+// cmake/PxConformance.cmake).
 std::string sharedTestData(const std::string& relative);
 
 // Traces one ray; QFAILs (through the caller's QVERIFY) if the tracer cannot be created.

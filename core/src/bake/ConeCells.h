@@ -1,7 +1,7 @@
 #pragma once
-// The cells of the bilinear surface as the cone bakers see them (CONVENTIONS §4, CONE_MAPS.md).
-// Coordinates are texel units relative to the apex texel b; a cell is the bilinear patch between
-// four neighbouring texel centres, named by its top-left texel.
+// The cells of the bilinear surface as the cone bakers see them (docs/conventions.md §4,
+// docs/cone-maps.md). Coordinates are texel units relative to the apex texel b; a cell is the
+// bilinear patch between four neighbouring texel centres, named by its top-left texel.
 //   repeat: W x H cells, cell i spans [i, i + 1] (its right corners wrap to texel (i + 1) mod W);
 //           the surface is periodic and cells are also met at offsets of whole periods.
 //   clamp:  max(W - 1, 1) x max(H - 1, 1) cells inside the box of texel centres; a 1-texel side

@@ -1,4 +1,4 @@
-// Quick cone maps (Valasek & Bán 2022, CONE_MAPS.md §2) for the bilinear surface: per texel,
+// Quick cone maps (Valasek & Bán 2022, docs/cone-maps.md §2) for the bilinear surface: per texel,
 // 3x3 blocks of max-pyramid nodes around it, level by level, each node bounded by its maximum at
 // the nearest point not already checked (region growing). Θ(N² log N), conservative because
 // every cell meets a node whose maximum is at least its own, no nearer than it.

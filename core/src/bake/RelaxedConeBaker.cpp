@@ -1,7 +1,7 @@
-// Relaxed cone maps, safe for the bilinear surface (CONE_MAPS.md §1, Bán et al. 2024): per texel
-// the ring scan's cells, found by a branch and bound over a maximum pyramid of the cells that can
-// fall away from the apex (per direction sector, SectorPyramid.h), nearest nodes first; a node is
-// skipped once its maximum at its nearest point cannot narrow the cone, so the result is the
+// Relaxed cone maps, safe for the bilinear surface (docs/cone-maps.md §1, Bán et al. 2024): per
+// texel the ring scan's cells, found by a branch and bound over a maximum pyramid of the cells that
+// can fall away from the apex (per direction sector, SectorPyramid.h), nearest nodes first; a node
+// is skipped once its maximum at its nearest point cannot narrow the cone, so the result is the
 // brute-force ring scan's (to the per-cell bound's tolerance). Apexes go in 4x4 tiles that share
 // one traversal, each starting from the cells that limited its neighbours' cones.
 

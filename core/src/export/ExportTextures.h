@@ -20,7 +20,7 @@ Image heightImage(const HeightField& field, bool asDepth);
 Image normalImage(const Image& normals, NormalGreen from, NormalGreen to);
 
 // R = height, G = sqrt(cone ratio) rounded *down* to the steps of `bits` (8 or 16; 32: float,
-// kept) so a stored cone is never wider than the baked one (CONVENTIONS §4).
+// kept) so a stored cone is never wider than the baked one (docs/conventions.md §4).
 Image coneImage(const HeightField& field, const ConeMap& cone, int bits);
 
 // Bilinear resampling between texel centres, with the material's wrap mode at the edges.

@@ -1,6 +1,6 @@
 #pragma once
 // Independent brute-force checks of cone maps, in double precision, written from the definitions
-// (CONVENTIONS §4, CONE_MAPS.md) rather than from the bakers' code.
+// (docs/conventions.md §4, docs/cone-maps.md) rather than from the bakers' code.
 
 #include "parallax/bake/ConeMap.h"
 #include "parallax/heightfield/HeightField.h"

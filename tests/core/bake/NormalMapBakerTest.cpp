@@ -1,5 +1,5 @@
-// Normal maps per CONVENTIONS §3: exact on ramps for every filter, seamless with repeat, green
-// conventions, strength set by the height scale alone; loaded maps passed through.
+// Normal maps per docs/conventions.md §3: exact on ramps for every filter, seamless with repeat,
+// green conventions, strength set by the height scale alone; loaded maps passed through.
 
 #include "parallax/bake/NormalMapBaker.h"
 

@@ -1,5 +1,5 @@
-// The bench's sweeps: each technique's default is measured, POM includes the seeds' baseline, and
-// the technique list parses as documented.
+// The bench's sweeps: each technique's default is measured, POM includes the tutorial shaders'
+// baseline, and the technique list parses as documented.
 
 #include "parallax/eval/QualitySweep.h"
 
@@ -113,9 +113,11 @@ void QualitySweepTest::sweepsByHand() {
         Result<std::vector<BenchSetting>> r = parseSweep(spec);
         return r.ok() ? std::string() : r.error().message;
     };
-    QCOMPARE(error("pom:binary-steps=4"),
-             std::string("pom has no parameter 'binary-steps' (layers, binary-steps, "
-                         "secant-steps, max-steps: those it reads)"));
+    // The message lists what the technique reads, never the parameter it refuses.
+    QCOMPARE(error("pom:binary-steps=4"), std::string("pom has no parameter 'binary-steps' (it "
+                                                      "reads layers)"));
+    QCOMPARE(error("relief:max-steps=4"), std::string("relief has no parameter 'max-steps' (it "
+                                                      "reads layers, binary-steps)"));
     QCOMPARE(error("pom:layers=8"), std::string("'8' is not a value of layers (MIN-MAX)"));
     QCOMPARE(error("pom:layers=40-8"), std::string("pom: min layers (40) exceed max layers (8)"));
     QCOMPARE(error("magic:max-steps=3"), std::string("unknown technique 'magic' in the sweep"));

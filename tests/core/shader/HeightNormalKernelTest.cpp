@@ -1,5 +1,5 @@
 // Height-derived normals (shaders/trace/normals.glsl) on the CPU through TraceKernel.h: both
-// filters return the exact slope of a linear ramp (CONVENTIONS §3), in uv units.
+// filters return the exact slope of a linear ramp (docs/conventions.md §3), in uv units.
 
 #include "trace/TraceKernel.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // Baked maps as images to write or upload, rounded the safe way for the pixel format:
 // cone ratios (G) round down, so a stored cone is never wider; heights and maxima round up, so a
-// stored apex is never lower and a stored maximum still bounds its cells (CONE_MAPS.md §1).
+// stored apex is never lower and a stored maximum still bounds its cells (docs/cone-maps.md §1).
 // Float formats keep values as they are.
 
 #include "parallax/bake/ConeMap.h"

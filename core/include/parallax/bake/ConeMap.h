@@ -1,6 +1,6 @@
 #pragma once
-// A cone map in memory (CONVENTIONS §4): per texel the square root of the cone ratio, as the G
-// channel stores it; the ratio itself is c = g^2, in uv units per unit of normalised height.
+// A cone map in memory (docs/conventions.md §4): per texel the square root of the cone ratio, as
+// the G channel stores it; the ratio itself is c = g^2, in uv units per unit of normalised height.
 // Heights (the R channel on disk) come from the height field the map was baked from.
 
 #include <cstddef>

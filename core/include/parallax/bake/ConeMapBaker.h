@@ -1,6 +1,6 @@
 #pragma once
-// The cone map bakers everything else calls (CONVENTIONS §4, CONE_MAPS.md). All of them are
-// for the bilinear surface, wrap or clamp as the material says, and use every core (TBB).
+// The cone map bakers everything else calls (docs/conventions.md §4, docs/cone-maps.md). All of
+// them are for the bilinear surface, wrap or clamp as the material says, and use every core (TBB).
 //
 // Conservative: no point of the bilinear height field lies inside any texel's cone. Quick cone
 // maps (Valasek & Bán 2022) over a maximum pyramid of the cells, Θ(N² log N); the cells around
@@ -27,7 +27,7 @@ Result<ConeMap> bakeQuickConeMap(const HeightField& field, WrapMode wrap,
 Result<ConeMap> bakeRelaxedConeMap(const HeightField& field, WrapMode wrap,
                                    const BakeControl& control = {});
 
-// What the techniques use: the raw bake of `kind`, then the 3x3 minimum (CONE_MAPS.md §1) that
+// What the techniques use: the raw bake of `kind`, then the 3x3 minimum (docs/cone-maps.md §1) that
 // makes bilinearly interpolated cones safe. Not quantised (see ConeMapImage.h for files).
 Result<ConeMap> bakeConeMap(const HeightField& field, WrapMode wrap, ConeKind kind,
                             const BakeControl& control);

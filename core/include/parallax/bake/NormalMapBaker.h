@@ -1,6 +1,6 @@
 #pragma once
-// Tangent-space normal maps from a height map (CONVENTIONS §3), and loaded normal maps passed
-// through with their green channel converted.
+// Tangent-space normal maps from a height map (docs/conventions.md §3), and loaded normal maps
+// passed through with their green channel converted.
 //
 // A baked normal describes the displaced surface z = s h at the material's height scale s:
 // n ∝ (-s dh/du, +s dh/dv, 1), dh/du and dh/dv in uv units. Each filter is a derivative estimate
@@ -52,8 +52,8 @@ Result<Image> convertNormalMap(const Image& normals, NormalGreen from, NormalGre
                                const std::string& source);
 
 // Tells a loaded normal map's green convention from the height map it belongs to: under the right
-// convention its green correlates positively with the height map's slope (CONVENTIONS §3). Sizes
-// may differ. Errors name `source`: too few channels, or no slope to tell by (a flat map).
+// convention its green correlates positively with the height map's slope (docs/conventions.md §3).
+// Sizes may differ. Errors name `source`: too few channels, or no slope to tell by (a flat map).
 Result<NormalGreen> detectNormalGreen(const Image& normals, const HeightField& field, WrapMode wrap,
                                       const std::string& source);
 

@@ -2,7 +2,7 @@
 // The quality settings the bench sweeps for each technique: its cost knob (layers, cone steps, the
 // pyramid's node cap) from cheap to expensive, the other parameters at their defaults. Each
 // technique's default setting (Technique.cpp) is always one of the points, and `pom` includes the
-// seeds' 8-32 layers, the baseline the project's techniques are measured against.
+// tutorial shaders' 8-32 layers, the baseline the project's techniques are measured against.
 
 #include "parallax/Result.h"
 #include "parallax/trace/Technique.h"

@@ -1,6 +1,6 @@
 #pragma once
-// Batch export: a folder of height maps, found by suffix (CONVENTIONS §6), each turned into a
-// material with one preset's settings and the sibling maps that share its base name.
+// Batch export: a folder of height maps, found by suffix (docs/conventions.md §6), each turned into
+// a material with one preset's settings and the sibling maps that share its base name.
 
 #include "parallax/Result.h"
 #include "parallax/material/Material.h"

@@ -1,5 +1,5 @@
 #pragma once
-// A height map as the core sees it: W×H floats in [0,1], white = high (CONVENTIONS §2).
+// A height map as the core sees it: W×H floats in [0,1], white = high (docs/conventions.md §2).
 
 #include "parallax/image/Image.h"
 

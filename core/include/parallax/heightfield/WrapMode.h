@@ -1,6 +1,6 @@
 #pragma once
-// How texel indices outside the map are resolved (CONVENTIONS §1). A material property: every
-// CPU sampler, baker and GPU sampler of a material uses the same mode.
+// How texel indices outside the map are resolved (docs/conventions.md §1). A material property:
+// every CPU sampler, baker and GPU sampler of a material uses the same mode.
 
 #include <optional>
 #include <string_view>

@@ -1,5 +1,5 @@
 #pragma once
-// A W×H image of float channels, row 0 at the top of the file (CONVENTIONS §1: no flips).
+// A W×H image of float channels, row 0 at the top of the file (docs/conventions.md §1: no flips).
 
 #include <cstddef>
 #include <vector>
@@ -11,6 +11,7 @@ struct Image {
     int height = 0;
     int channels = 0;
     std::vector<float> pixels; // row-major, interleaved channels
+    bool alphaOnly = false;    // one channel, which the file names alpha (an EXR's "A")
 
     Image() = default;
     Image(int w, int h, int c)

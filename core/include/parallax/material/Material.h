@@ -19,7 +19,7 @@ enum class NormalSource {
     HeightSobel,   // derived from height in the shader: 3x3 Sobel
 };
 
-// Green channel convention of a normal map (CONVENTIONS §3).
+// Green channel convention of a normal map (docs/conventions.md §3).
 enum class NormalGreen {
     OpenGL,  // Y+ (glTF, Godot, Unity, Blender)
     DirectX, // Y- (Unreal)
@@ -45,7 +45,7 @@ struct Material {
     MaterialMaps maps;
     HeightChannel heightChannel = HeightChannel::Red;
     bool heightIsDepth = false; // white = deep: loaded inverted
-    float heightScale = 0.05f;  // s, uv units (CONVENTIONS §2)
+    float heightScale = 0.05f;  // s, uv units (docs/conventions.md §2)
     WrapMode wrap = WrapMode::Repeat;
     float tiling = 1.0f; // uv repeats across a mesh
 

@@ -10,7 +10,7 @@
 
 namespace px {
 
-// An RGB image the size of `field`, holding sRGB-encoded values in [0, 1] (CONVENTIONS §6).
+// An RGB image the size of `field`, holding sRGB-encoded values in [0, 1] (docs/conventions.md §6).
 // Bricks, stones and rivets get a material look (mortar and tinted bricks, earth and cobbles,
 // steel and rivet heads, each raised region its own tint); the test shapes a neutral stone ramp.
 // `wrap` decides whether raised regions continue across the tile's edges.

@@ -24,7 +24,7 @@ enum class TbnSource { VertexTangents, Derivatives };
 enum class ShaderOutput {
     Color,   // the shaded, sRGB-encoded colour
     Surface, // (u, v, t, fetches) of each pixel's hit, into a float target: heat maps and tests
-    Trace,   // the canonical trace scene (CONVENTIONS §5): pixel (i, j) is ray (i, j)
+    Trace,   // the canonical trace scene (docs/conventions.md §5): pixel (i, j) is ray (i, j)
 };
 
 // How the kernels read the height and cone maps. Production: as an engine would, through the
@@ -84,14 +84,8 @@ std::vector<VariantKey> allVariants();
 // The key a material asks for with the maps it actually has (paths non-empty).
 VariantKey variantFor(const Material& material, ShaderOutput output = ShaderOutput::Color);
 
-// The names the command line and the variant names use ("none", "map", "central", "sobel";
-// "blinn-phong", "metallic-roughness"). In their own namespace: the material file has its own.
+// The kernel flavours' names: "production", "verify" (`--kernels`, variant names).
 namespace shader {
-std::optional<NormalSource> parseNormalSource(std::string_view name);
-std::string_view normalSourceName(NormalSource source);
-std::optional<LightingModel> parseLightingModel(std::string_view name);
-std::string_view lightingModelName(LightingModel model);
-// "production", "verify" (`--kernels`).
 std::optional<KernelFlavour> parseKernelFlavour(std::string_view name);
 std::string_view kernelFlavourName(KernelFlavour flavour);
 } // namespace shader

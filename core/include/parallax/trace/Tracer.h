@@ -42,7 +42,7 @@ public:
 
     // uv0 in double so tiled coordinates far from the origin (4096.3) keep their precision: with
     // repeat the integer part is set aside before marching and added back to the hit.
-    // P = s * d.xy / (-d.z) (CONVENTIONS §2); it must be finite.
+    // P = s * d.xy / (-d.z) (docs/conventions.md §2); it must be finite.
     TraceResult trace(glm::dvec2 uv0, glm::vec2 P) const;
 
     // From now on, trace with the production kernels (the GPU's default flavour) on a model of a
