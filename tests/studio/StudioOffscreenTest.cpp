@@ -92,7 +92,7 @@ private slots:
         QCOMPARE(compare->raysField()->text(), QString("8 per side"));
         // The Cost box shows its whole text.
         QComboBox* axis = compare->axisCombo();
-        QVERIFY(axis->width() >= axis->fontMetrics().horizontalAdvance(axis->currentText()));
+        QTRY_VERIFY(axis->width() >= axis->fontMetrics().horizontalAdvance(axis->currentText()));
         // GPU milliseconds measured on this machine's GL (llvmpipe on CI): a third cost panel,
         // which exists only when every pooled point was timed.
         QCOMPARE(compare->chart()->axes.back(), CostAxis::GpuTime);

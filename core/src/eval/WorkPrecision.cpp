@@ -108,7 +108,7 @@ WorkPrecisionChart makeWorkPrecisionChart(const BenchReport& report, double erro
                 series->points.push_back(point);
                 costLo = std::min(costLo, *cost);
                 costHi = std::max(costHi, *cost);
-                errorHi = std::max(errorHi, point.plotMaxError);
+                errorHi = std::max({errorHi, point.plotError, point.plotMaxError});
             }
             if (costHi > 0.0)
                 panel.costRange = enclosingDecades(costLo, costHi);
