@@ -2,8 +2,9 @@
 // measured against `exact` (core/include/parallax/eval/Bench.h), as CSV and a work-precision plot.
 
 #include "Cli.h"
+#include "CommonOptions.h"
 #include "GpuTracer.h"
-#include "HeadlessContext.h"
+#include "HeadlessBenchTimer.h"
 #include "WorkPrecisionPlot.h"
 #include "parallax/eval/BenchCsv.h"
 #include "parallax/eval/WorkPrecision.h"
@@ -45,6 +46,8 @@ struct BenchOptions {
     int repeats = 1;
     bool gpu = false;
     int gpuFrames = 1;
+    int gpuRays = 1440;
+    KernelOptions kernels;
     std::string out;
     std::string plot;
     std::string fromCsv;
@@ -87,69 +90,22 @@ Result<std::vector<BenchMap>> loadMaps(const BenchOptions& o) {
     return maps;
 }
 
-// GPU timing on a headless OpenGL context (app/render): the canonical scene traced by the GPU
-// kernels (the same code as the CPU's) with R = 1440, whose 1440^2 = 2 073 600 rays are exactly
-// a 1920x1080 frame's pixels. One untimed warm-up trace (shader compile, JIT), then the fastest of
-// `frames` timed ones. Lives on the thread that made it: the bench calls it from that thread.
-class HeadlessFrameTimer {
-public:
-    static Result<std::shared_ptr<HeadlessFrameTimer>> create(int frames) {
-        Result<std::unique_ptr<HeadlessContext>> context = HeadlessContext::create();
-        if (!context)
-            return Error{"no GPU timing: " + context.error().message};
-        auto timer = std::shared_ptr<HeadlessFrameTimer>(new HeadlessFrameTimer);
-        timer->m_context = std::move(*context);
-        timer->m_frames = frames;
-        const GlInfo& gl = timer->m_context->info();
-        timer->m_label = gl.renderer + (gl.software() ? " [software rasteriser: CPU time]" : "");
-        return timer;
-    }
-
-    Result<GpuFrameTiming> time(const GpuFrameRequest& r) {
-        TraceScene scene;
-        scene.rays = static_cast<int>(std::lround(std::sqrt(double(r.width) * r.height)));
-        scene.polarDeg = r.polarDeg;
-        scene.azimuthDeg = r.azimuthDeg;
-        const Technique technique = r.setting->technique;
-        const TraceParams& params = r.setting->params;
-        double best = 0.0;
-        bool timerQuery = false;
-        for (int frame = 0; frame <= m_frames; ++frame) {
-            GpuTraceTiming timing;
-            Result<std::vector<TraceResult>> hits =
-                traceSceneGpu(m_shaders, r.maps, technique, params, r.scale, scene, &timing);
-            if (!hits)
-                return Error{"no GPU timing: " + hits.error().message};
-            if (frame == 1 || (frame > 1 && timing.milliseconds < best))
-                best = timing.milliseconds;
-            timerQuery = timing.gpuTimer;
-        }
-        return GpuFrameTiming{
-            best, m_label + (timerQuery ? ", GL timer query" : ", steady clock around glFinish")};
-    }
-
-private:
-    HeadlessFrameTimer() = default;
-    std::unique_ptr<HeadlessContext> m_context;
-    ShaderCache m_shaders;
-    int m_frames = 1;
-    std::string m_label;
-};
-
 void printSummary(std::ostream& out, const BenchReport& report) {
     const bool gpu = std::any_of(report.pooled.begin(), report.pooled.end(),
                                  [](const BenchRow& r) { return r.gpuMsPerFrame.has_value(); });
     char line[256];
     std::snprintf(line, sizeof line, "%-13s %-24s %6s %10s %10s %10s %9s %9s %10s%s\n", "technique",
                   "setting", "polar", "mean err", "p99 err", "max err", "wrong", "fetches",
-                  "ns/ray", gpu ? "   GPU ms" : "");
+                  "ns/ray", gpu ? "   GPU ms  GPU p99 err  GPU fetches" : "");
     out << line;
     for (const BenchRow& row : report.pooled) {
         const std::string ns =
             row.cpuNsPerRay ? std::to_string(std::lround(*row.cpuNsPerRay)) : "-";
-        char ms[32] = "";
+        char ms[64] = "";
         if (gpu)
-            std::snprintf(ms, sizeof ms, " %9.1f", row.gpuMsPerFrame.value_or(NAN));
+            std::snprintf(ms, sizeof ms, " %9.1f %12.4g %12.2f", row.gpuMsPerFrame.value_or(NAN),
+                          row.gpuStats ? row.gpuStats->p99Error : NAN,
+                          row.gpuStats ? row.gpuStats->meanFetches : NAN);
         std::snprintf(
             line, sizeof line, "%-13s %-24s %6g %10.4g %10.4g %10.4g %9lld %9.2f %10s%s\n",
             info(row.setting.technique).name.data(), row.setting.label.c_str(), row.polarDeg,
@@ -242,9 +198,14 @@ int runBenchCommand(const BenchOptions& o) {
     config.rays = o.rays;
     config.timingRepeats = o.repeats;
     if (o.gpu) {
-        Result<std::shared_ptr<HeadlessFrameTimer>> timer = HeadlessFrameTimer::create(o.gpuFrames);
+        HeadlessBenchOptions options;
+        options.frames = o.gpuFrames;
+        options.rays = o.gpuRays == 1440 ? 0 : o.gpuRays; // 1440^2: the frame itself
+        options.kernels = o.kernels.flavour();
+        Result<std::unique_ptr<HeadlessBenchTimer>> timer = HeadlessBenchTimer::create(options);
         if (timer) {
-            config.gpuTimer = [t = *timer](const GpuFrameRequest& r) { return t->time(r); };
+            config.gpuTimer = [t = std::shared_ptr<HeadlessBenchTimer>(std::move(*timer))](
+                                  const GpuFrameRequest& r) { return t->time(r); };
         } else {
             config.gpuUnavailable = timer.error().message;
         }
@@ -353,6 +314,11 @@ Action addBenchCommand(CLI::App& app) {
     cmd->add_option("--gpu-frames", o->gpuFrames,
                     "Timed GPU traces per setting after one warm-up, fastest reported")
         ->check(CLI::Range(1, 100));
+    cmd->add_option("--gpu-rays", o->gpuRays,
+                    "Rays per side of the timed GPU trace (1440: a 1920x1080 frame's pixels; "
+                    "fewer are timed and scaled to the frame)")
+        ->check(CLI::Range(1, 4096));
+    o->kernels.addTo(*cmd);
     cmd->add_option("--out", o->out, "Output CSV; - for standard output");
     cmd->add_option("--plot", o->plot, "Work-precision plot (.svg)");
     cmd->add_option("--from-csv", o->fromCsv,

@@ -92,4 +92,16 @@ void QualityOptions::applyTo(TraceParams& params) const {
     params.maxSteps = maxSteps.value_or(params.maxSteps);
 }
 
+void KernelOptions::addTo(CLI::App& command) {
+    command
+        .add_option("--kernels", name,
+                    "GPU kernels: production (hardware filtering and gathers, as an engine "
+                    "samples) or verify (texel reads filtered in shader code: equal to the CPU)")
+        ->check(CLI::IsMember({"production", "verify"}));
+}
+
+KernelFlavour KernelOptions::flavour() const {
+    return shader::parseKernelFlavour(name).value_or(KernelFlavour::Production);
+}
+
 } // namespace px::cli

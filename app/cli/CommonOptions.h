@@ -6,6 +6,7 @@
 #include "parallax/heightfield/HeightField.h"
 #include "parallax/heightfield/HeightFieldLoader.h"
 #include "parallax/heightfield/WrapMode.h"
+#include "parallax/shader/VariantKey.h"
 #include "parallax/trace/Technique.h"
 
 #include <CLI/CLI.hpp>
@@ -42,6 +43,16 @@ struct QualityOptions {
     void addTo(CLI::App& command);
     // Overrides the parameters given on the command line.
     void applyTo(TraceParams& params) const;
+};
+
+// The GPU kernels' flavour (VariantKey.h): production as an engine samples, or verify, the
+// kernels that match the CPU to the bit.
+struct KernelOptions {
+    std::string name = "production";
+
+    // Adds --kernels production|verify.
+    void addTo(CLI::App& command);
+    KernelFlavour flavour() const;
 };
 
 } // namespace px::cli

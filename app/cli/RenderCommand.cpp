@@ -42,6 +42,7 @@ struct RenderOptions {
     std::string camera;
     std::string background = "0,0,0,0";
     int timeFrames = 0;
+    KernelOptions kernels;
     std::string out;
 };
 
@@ -217,6 +218,7 @@ int runRender(const RenderOptions& o) {
     options.mesh = mesh;
     options.tbn = o.derivativeTbn ? TbnSource::Derivatives : TbnSource::VertexTangents;
     options.background = {(*background)[0], (*background)[1], (*background)[2], (*background)[3]};
+    options.kernels = o.kernels.flavour();
     Result<Image> image = (*renderer)->renderImage(**gpu, *material, camera, sun, options, *size);
     if (!image)
         return fail(image.error().message);
@@ -230,18 +232,35 @@ int runRender(const RenderOptions& o) {
         if (!target)
             return fail(target.error().message);
         target->bind();
-        Status drawn = success();
-        const FrameTiming t = px::timeFrames(
-            [&] {
-                if (drawn)
-                    drawn = (*renderer)->draw(**gpu, *material, camera, sun, options, *size);
-            },
-            o.timeFrames, 1, (*renderer)->glInfo());
-        if (!drawn)
-            return fail(drawn.error().message);
-        std::printf("%s %dx%d: median %.2f ms, min %.2f, max %.2f over %d frames (%s, %s)\n",
-                    info(material->technique).name.data(), size->x, size->y, t.medianMs, t.minMs,
-                    t.maxMs, t.frames, t.method().c_str(), (*renderer)->glInfo().renderer.c_str());
+        // Both flavours in one run, the one drawn first: their ratio is what an engine saves.
+        const KernelFlavour drawn = options.kernels;
+        const KernelFlavour other =
+            drawn == KernelFlavour::Production ? KernelFlavour::Verify : KernelFlavour::Production;
+        double median[2] = {0.0, 0.0};
+        for (KernelFlavour flavour : {drawn, other}) {
+            DrawOptions timed = options;
+            timed.kernels = flavour;
+            Status status = success();
+            const FrameTiming t = px::timeFrames(
+                [&] {
+                    if (status)
+                        status = (*renderer)->draw(**gpu, *material, camera, sun, timed, *size);
+                },
+                o.timeFrames, 1, (*renderer)->glInfo());
+            if (!status)
+                return fail(status.error().message);
+            median[static_cast<int>(flavour)] = t.medianMs;
+            std::printf("%s %dx%d: median %.2f ms, min %.2f, max %.2f over %d frames (%s kernels, "
+                        "%s, %s)\n",
+                        info(material->technique).name.data(), size->x, size->y, t.medianMs,
+                        t.minMs, t.maxMs, t.frames, shader::kernelFlavourName(flavour).data(),
+                        t.method().c_str(), (*renderer)->glInfo().renderer.c_str());
+        }
+        std::printf("production / verify frame time: %.3f\n",
+                    median[1] > 0.0 ? median[0] / median[1] : 0.0);
+        const GlInfo& gl = (*context)->info();
+        std::printf("GL: %s; vendor %s; %s\n", gl.summary().c_str(), gl.vendor.c_str(),
+                    (*context)->platform().c_str());
     }
     return 0;
 }
@@ -291,8 +310,11 @@ Action addRenderCommand(CLI::App& app) {
                     "Orbit camera AZIMUTH,ELEVATION,DISTANCE (degrees, world units)");
     cmd->add_option("--background", o->background,
                     "Background R,G,B,A in [0,1] as stored (default transparent)");
-    cmd->add_option("--time", o->timeFrames, "Also time this many frames and print the median")
+    cmd->add_option("--time", o->timeFrames,
+                    "Also time this many frames with each kernel flavour and print the medians "
+                    "and their ratio")
         ->check(CLI::Range(1, 10000));
+    o->kernels.addTo(*cmd);
     cmd->add_option("--out", o->out, "Output image (.png)")->required();
     return [o] { return runRender(*o); };
 }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <set>
 
 namespace px::cli {
 
@@ -31,6 +32,7 @@ struct ShaderOptions {
     std::string out;
     bool list = false;
     std::string dumpAll;
+    KernelOptions kernels;
 };
 
 Result<VariantKey> keyFrom(const ShaderOptions& o) {
@@ -41,7 +43,9 @@ Result<VariantKey> keyFrom(const ShaderOptions& o) {
         Result<Material> material = loadMaterial(o.material);
         if (!material)
             return material.error();
-        return variantFor(*material, output);
+        VariantKey k = variantFor(*material, output);
+        k.flavour = o.kernels.flavour();
+        return canonical(k);
     }
     VariantKey k;
     k.technique = *parseTechnique(o.technique);
@@ -55,29 +59,41 @@ Result<VariantKey> keyFrom(const ShaderOptions& o) {
     k.lighting = *parseLightingModel(o.lighting);
     k.tbn = o.derivativeTbn ? TbnSource::Derivatives : TbnSource::VertexTangents;
     k.output = output;
+    k.flavour = o.kernels.flavour();
     if (Status s = k.validate(); !s)
         return s.error();
     return canonical(k);
 }
 
+// Each variant's fragment stage as VARIANT.frag; the vertex stages, shared by many variants (they
+// read only which outputs the fragment stage keeps), once each as VERTEX-KEY.vert.
 int dumpAll(const std::string& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec)
         return fail(dir + ": cannot create the folder (" + ec.message() + ")");
     int count = 0;
+    std::set<std::string> vertexStages;
     for (const VariantKey& key : allVariants()) {
         Result<GeneratedProgram> program = generateProgram(key);
         if (!program)
             return fail(key.name() + ": " + program.error().message);
-        const std::string base = (std::filesystem::path(dir) / key.name()).string();
-        if (Status s = writeTextFile(base + ".frag", program->fragment.text); !s)
+        const std::filesystem::path folder(dir);
+        if (Status s =
+                writeTextFile((folder / (key.name() + ".frag")).string(), program->fragment.text);
+            !s)
             return fail(s.error().message);
-        if (Status s = writeTextFile(base + ".vert", program->vertex.text); !s)
-            return fail(s.error().message);
+        const std::string vertex = program->vertexKey.name();
+        if (vertexStages.insert(vertex).second) {
+            if (Status s =
+                    writeTextFile((folder / (vertex + ".vert")).string(), program->vertex.text);
+                !s)
+                return fail(s.error().message);
+        }
         ++count;
     }
-    std::cout << "wrote " << count << " variants (" << 2 * count << " files) to " << dir << "\n";
+    std::cout << "wrote " << count << " variants: " << count << " fragment and "
+              << vertexStages.size() << " vertex shaders to " << dir << "\n";
     return 0;
 }
 
@@ -140,11 +156,14 @@ Action addShaderCommand(CLI::App& app) {
                     "What the shader writes: color, surface (u, v, t, fetches per pixel) or trace "
                     "(the canonical trace scene)")
         ->check(CLI::IsMember({"color", "surface", "trace"}));
+    o->kernels.addTo(*cmd);
     cmd->add_option("--stage", o->stage, "Which stage to write")
         ->check(CLI::IsMember({"fragment", "vertex"}));
     cmd->add_option("--out", o->out, "Output file (.frag/.vert); - for standard output");
     cmd->add_flag("--list", o->list, "List every variant's name");
-    cmd->add_option("--dump-all", o->dumpAll, "Write every variant's two stages into this folder");
+    cmd->add_option("--dump-all", o->dumpAll,
+                    "Write every variant's fragment stage and each distinct vertex stage into "
+                    "this folder");
     return [o] { return runShader(*o); };
 }
 

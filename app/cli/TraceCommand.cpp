@@ -3,10 +3,12 @@
 #include "Cli.h"
 #include "CommonOptions.h"
 #include "GpuTracer.h"
+#include "parallax/eval/HitErrorStats.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/trace/ParallaxBound.h"
 #include "parallax/trace/TraceScene.h"
 
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -25,6 +27,7 @@ struct TraceOptions {
     QualityOptions quality;
     std::string out;
     bool gpu = false;
+    KernelOptions kernels;
 };
 
 std::vector<std::string> techniqueNames() {
@@ -32,6 +35,37 @@ std::vector<std::string> techniqueNames() {
     for (const TechniqueInfo& t : allTechniques())
         names.emplace_back(t.name);
     return names;
+}
+
+// What the GPU kernels' hits cost in accuracy beside the CPU's: both against the CPU's exact
+// reference for the same rays (the error of what the GPU draws, hardware filtering included).
+std::string gpuSummary(const TraceOptions& o, const TraceMaps& maps, const Tracer& cpu,
+                       const TraceScene& scene, const std::vector<TraceResult>& gpuHits,
+                       const GpuTraceTiming& timing) {
+    Result<Tracer> exact =
+        Tracer::create(maps, Technique::Exact, info(Technique::Exact).defaults, o.scale);
+    if (!exact)
+        return "no error summary: " + exact.error().message;
+    const std::vector<TraceResult> reference = traceScene(*exact, scene);
+    const std::vector<TraceResult> cpuHits = traceScene(cpu, scene);
+    // Most GPUs filter with 8-bit weights, llvmpipe with finer ones: the CPU model says what 8 bits
+    // cost on the same rays.
+    Tracer eightBit = cpu;
+    eightBit.modelTextureUnit(8);
+    const std::vector<TraceResult> modelHits = traceScene(eightBit, scene);
+    const int w = maps.height->width, h = maps.height->height;
+    const HitErrorStats g = measureHits(gpuHits, reference, w, h);
+    const HitErrorStats c = measureHits(cpuHits, reference, w, h);
+    const HitErrorStats m = measureHits(modelHits, reference, w, h);
+    char line[640];
+    std::snprintf(line, sizeof line,
+                  "GPU (%s kernels, %s): p99 error %.4g texels, mean %.4g, max %.4g, %.2f fetches "
+                  "per ray; CPU: p99 %.4g, mean %.4g, max %.4g, %.2f fetches; production kernels "
+                  "with 8-bit filter weights (CPU model): p99 %.4g, mean %.4g, max %.4g\n",
+                  o.kernels.name.c_str(), timing.renderer.c_str(), g.p99Error, g.meanError,
+                  g.maxError, g.meanFetches, c.p99Error, c.meanError, c.maxError, c.meanFetches,
+                  m.p99Error, m.meanError, m.maxError);
+    return line;
 }
 
 int runTrace(const TraceOptions& o) {
@@ -60,22 +94,27 @@ int runTrace(const TraceOptions& o) {
         return fail(tracer.error().message);
 
     std::vector<TraceResult> results;
+    std::string summary;
     if (o.gpu) {
-        Result<std::vector<TraceResult>> gpu =
-            traceSceneHeadless(maps, technique, params, o.scale, scene);
+        GpuTraceTiming timing;
+        Result<std::vector<TraceResult>> gpu = traceSceneHeadless(
+            maps, technique, params, o.scale, scene, &timing, o.kernels.flavour());
         if (!gpu)
             return fail(gpu.error().message);
         results = std::move(*gpu);
+        summary = gpuSummary(o, maps, *tracer, scene, results, timing);
     } else {
         results = traceScene(*tracer, scene);
     }
     const std::string csv = traceCsv(scene, results);
     if (o.out == "-") {
-        std::cout << csv;
+        std::cout << csv << std::flush;
+        std::cerr << summary; // after the CSV, which may be piped on
         return 0;
     }
     if (Status s = writeTextFile(o.out, csv); !s)
         return fail(s.error().message);
+    std::cout << summary;
     return 0;
 }
 
@@ -97,7 +136,9 @@ Action addTraceCommand(CLI::App& app) {
         ->check(CLI::IsMember(techniqueNames()));
     o->quality.addTo(*cmd);
     cmd->add_flag("--gpu", o->gpu,
-                  "Trace on the GPU (headless OpenGL 4.3, the same kernels): same CSV");
+                  "Trace on the GPU (headless OpenGL 4.3, the same kernels): same CSV, and a "
+                  "line comparing the GPU's and the CPU's errors against the exact hits");
+    o->kernels.addTo(*cmd);
     cmd->add_option("--out", o->out, "Output CSV (i,j,u,v,t,fetches); - for standard output")
         ->required();
     return [o] { return runTrace(*o); };

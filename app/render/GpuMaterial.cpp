@@ -61,6 +61,8 @@ void GpuMaterial::setWrap(WrapMode wrap) {
         m_atlas.reset();
     }
     m_wrap = wrap;
+    if (m_height)
+        gl::setWrap(m_height, wrap);
     for (const gl::Object* t : {&m_albedo, &m_normal, &m_orm}) {
         if (*t)
             gl::setFilteredSampling(*t, wrap);
@@ -89,6 +91,7 @@ Status GpuMaterial::prepare(Technique technique) {
         Result<gl::Object> t = gl::uploadConeMap(m_field, *cpu);
         if (!t)
             return t.error();
+        gl::setWrap(*t, m_wrap);
         gpu = std::move(*t);
         return success();
     };

@@ -16,7 +16,7 @@ namespace px {
 Result<std::vector<TraceResult>> traceSceneGpu(ShaderCache& shaders, const TraceMaps& maps,
                                                Technique technique, const TraceParams& params,
                                                float heightScale, const TraceScene& scene,
-                                               GpuTraceTiming* timing) {
+                                               GpuTraceTiming* timing, KernelFlavour kernels) {
     if (Status s = validate(scene); !s)
         return s.error();
     // The CPU tracer's checks, and its choice of derived maps.
@@ -31,6 +31,7 @@ Result<std::vector<TraceResult>> traceSceneGpu(ShaderCache& shaders, const Trace
     key.technique = technique;
     key.wrap = maps.wrap;
     key.output = ShaderOutput::Trace;
+    key.flavour = kernels;
     Result<const ShaderProgram*> program = shaders.program(key);
     if (!program)
         return program.error();
@@ -55,6 +56,7 @@ Result<std::vector<TraceResult>> traceSceneGpu(ShaderCache& shaders, const Trace
     Result<gl::Object> height = gl::uploadHeight(field, gl::HeightFormat::R32F);
     if (!height)
         return height.error();
+    gl::setWrap(*height, maps.wrap);
     Result<gl::Object> rays = gl::uploadRg32f(R, R, origins);
     if (!rays)
         return rays.error();
@@ -72,6 +74,7 @@ Result<std::vector<TraceResult>> traceSceneGpu(ShaderCache& shaders, const Trace
         Result<gl::Object> t = gl::uploadConeMap(field, *given);
         if (!t)
             return t.error();
+        gl::setWrap(*t, maps.wrap);
         cone = std::move(*t);
     }
     int top = 0;
@@ -131,6 +134,7 @@ Result<std::vector<TraceResult>> traceSceneGpu(ShaderCache& shaders, const Trace
     if (timing) {
         timing->milliseconds = t.medianMs;
         timing->gpuTimer = t.gpuTimer;
+        timing->renderer = currentGlInfo().renderer;
     }
 
     // read() puts GL's bottom row (ray row 0) last.
@@ -158,13 +162,13 @@ namespace px {
 
 Result<std::vector<TraceResult>> traceSceneHeadless(const TraceMaps& maps, Technique technique,
                                                     const TraceParams& params, float heightScale,
-                                                    const TraceScene& scene,
-                                                    GpuTraceTiming* timing) {
+                                                    const TraceScene& scene, GpuTraceTiming* timing,
+                                                    KernelFlavour kernels) {
     Result<std::unique_ptr<HeadlessContext>> context = HeadlessContext::create();
     if (!context)
         return context.error();
     ShaderCache shaders;
-    return traceSceneGpu(shaders, maps, technique, params, heightScale, scene, timing);
+    return traceSceneGpu(shaders, maps, technique, params, heightScale, scene, timing, kernels);
 }
 
 } // namespace px

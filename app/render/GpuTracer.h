@@ -15,16 +15,20 @@ namespace px {
 struct GpuTraceTiming {
     double milliseconds = 0.0; // the trace pass alone (glFinish before and after)
     bool gpuTimer = false;     // measured with a GL timer query (real GPUs) or a steady clock
+    std::string renderer;      // GL_RENDERER of the context that traced
 };
 
 // Traces every ray of `scene`. The derived maps the technique reads are taken from `maps` when
 // given, else baked (the same bakers the CPU Tracer uses). Errors: the Tracer's (empty height map,
 // parameters out of range), the scene's, and GL limits (R larger than the GL renders).
 // Needs a current OpenGL 4.3 context.
+// `kernels` picks the flavour: Verify matches the CPU to the bit, Production filters in hardware
+// (its fetches count each hardware sample or gather as one, as the CPU counts its reads).
 Result<std::vector<TraceResult>> traceSceneGpu(ShaderCache& shaders, const TraceMaps& maps,
                                                Technique technique, const TraceParams& params,
                                                float heightScale, const TraceScene& scene,
-                                               GpuTraceTiming* timing = nullptr);
+                                               GpuTraceTiming* timing = nullptr,
+                                               KernelFlavour kernels = KernelFlavour::Verify);
 
 } // namespace px
 
@@ -34,6 +38,7 @@ namespace px {
 Result<std::vector<TraceResult>> traceSceneHeadless(const TraceMaps& maps, Technique technique,
                                                     const TraceParams& params, float heightScale,
                                                     const TraceScene& scene,
-                                                    GpuTraceTiming* timing = nullptr);
+                                                    GpuTraceTiming* timing = nullptr,
+                                                    KernelFlavour kernels = KernelFlavour::Verify);
 
 } // namespace px

@@ -39,6 +39,7 @@ VariantKey Renderer::variantFor(const GpuMaterial& gpu, const Material& m,
     k.lighting = m.lighting;
     k.tbn = o.tbn;
     k.output = o.output == ShaderOutput::Surface ? ShaderOutput::Surface : ShaderOutput::Color;
+    k.flavour = o.kernels;
     return canonical(k);
 }
 

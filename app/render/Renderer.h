@@ -27,6 +27,9 @@ struct DrawOptions {
     MeshKind mesh = MeshKind::Plane;
     TbnSource tbn = TbnSource::VertexTangents;
     ShaderOutput output = ShaderOutput::Color; // Color or Surface (hit data into a float target)
+    // Production: the texture units filter, as an engine's shader would; Verify: the kernels
+    // that match the CPU to the bit.
+    KernelFlavour kernels = KernelFlavour::Production;
     // Cleared to before drawing, as stored (the colour output is sRGB-encoded); alpha 0 leaves the
     // background transparent. The Surface output always clears to -1 (t = -1: no surface).
     glm::vec4 background{0.0f};

@@ -53,10 +53,12 @@ Result<Object> makeTexture(int width, int height, GLenum internalFormat, GLenum 
         glGenerateMipmap(GL_TEXTURE_2D);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     } else {
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        // Bilinear: the production kernels filter cone maps in hardware (texelFetch, which the
+        // verify kernels and the atlas use, ignores the filter).
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     }
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mipmaps ? GL_LINEAR : GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glBindTexture(GL_TEXTURE_2D, 0);
     if (Status s = checkGlError(std::string("uploading the ") + what); !s)
         return s.error();
@@ -185,14 +187,20 @@ Result<Object> uploadRg32f(int width, int height, const std::vector<float>& texe
     return makeTexture(width, height, GL_RG32F, GL_RG, GL_FLOAT, texels.data(), false, "cone map");
 }
 
-void setFilteredSampling(const Object& texture, WrapMode wrap) {
-    // llvmpipe's anisotropic filter (Mesa 22) spends seconds per pixel on extreme footprints such
-    // as a sphere's poles: minutes per frame. Software renderers filter trilinearly.
-    static const bool anisotropy = anisotropyAvailable() && !currentGlInfo().software();
+void setWrap(const Object& texture, WrapMode wrap) {
     const GLint mode = wrap == WrapMode::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
     glBindTexture(GL_TEXTURE_2D, texture.id());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, mode);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, mode);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void setFilteredSampling(const Object& texture, WrapMode wrap) {
+    // llvmpipe's anisotropic filter (Mesa 22) spends seconds per pixel on extreme footprints such
+    // as a sphere's poles: minutes per frame. Software renderers filter trilinearly.
+    static const bool anisotropy = anisotropyAvailable() && !currentGlInfo().software();
+    setWrap(texture, wrap);
+    glBindTexture(GL_TEXTURE_2D, texture.id());
     if (anisotropy)
         glTexParameterf(GL_TEXTURE_2D, 0x84FE /* GL_TEXTURE_MAX_ANISOTROPY */, 8.0f);
     glBindTexture(GL_TEXTURE_2D, 0);

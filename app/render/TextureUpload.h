@@ -32,12 +32,16 @@ Result<Object> uploadNormalMap(const Image& normal);
 // Occlusion, roughness and metallic packed into one RGBA16 (glTF's ORM order); absent maps are
 // 1 and the others are resampled to the largest one's size.
 Result<Object> uploadOrm(const Image* ao, const Image* roughness, const Image* metallic);
-// RG32F: R the height, G sqrt(cone ratio), level 0 only (read with texelFetch).
+// RG32F: R the height, G sqrt(cone ratio), level 0 only, bilinear.
 Result<Object> uploadConeMap(const HeightField& field, const ConeMap& cones);
 // R32F max-mip atlas (MaxMipPyramid::atlas()); `rows` receives each level's first row.
 Result<Object> uploadMaxMipAtlas(const MaxMipPyramid& pyramid, std::vector<int>& rows);
-// RG32F from two floats per texel, level 0 only.
+// RG32F from two floats per texel, level 0 only, bilinear.
 Result<Object> uploadRg32f(int width, int height, const std::vector<float>& texels);
+
+// The wrap mode alone: the height and cone maps, which the production kernels filter in hardware
+// with the material's wrap (CONVENTIONS §1: every sampler uses it).
+void setWrap(const Object& texture, WrapMode wrap);
 
 // Sampler state for filtered maps: wrap as the material says, trilinear, 8x anisotropic where the
 // GL offers it and is not a software renderer.

@@ -46,10 +46,13 @@ void BenchRunner::start(BenchConfig config) {
             Qt::QueuedConnection);
     };
     std::shared_ptr<std::atomic<bool>> flag = m_cancel;
-    m_watcher.setFuture(QtConcurrent::run([config = std::move(config), control, flag] {
+    m_watcher.setFuture(QtConcurrent::run([config = std::move(config), control, flag]() mutable {
         BenchOutcome outcome;
         const auto start = std::chrono::steady_clock::now();
         Result<BenchReport> report = runBench(config, control);
+        // A GPU timer holds a GL context current on this thread: it must end here, not on the
+        // thread that happens to destroy this task.
+        config.gpuTimer = nullptr;
         if (report)
             outcome.report = std::move(*report);
         else if (isEvaluationCancelled(report.error()))

@@ -188,7 +188,11 @@ Result<PreviewStats> PreviewRenderer::measure(const PreviewScene& scene, QSize p
     Result<Image> hits = d.surfaces(scene, scene.material, options, boxes);
     if (!hits)
         return hits.error();
-    Result<Image> reference = d.surfaces(scene, exact, options, boxes);
+    // The view's hits come from the kernels it draws with (production: hardware filtering); the
+    // reference is the exact walk in the verify flavour, equal to the CPU's.
+    DrawOptions referenceOptions = options;
+    referenceOptions.kernels = KernelFlavour::Verify;
+    Result<Image> reference = d.surfaces(scene, exact, referenceOptions, boxes);
     if (!reference)
         return reference.error();
     const SurfaceErrors errors =

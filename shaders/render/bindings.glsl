@@ -1,7 +1,9 @@
 // The GPU side of the trace kernels' bindings (../trace/common.glsl). Uniform declarations are
 // written by the generator for exactly the names the kept code reads; pxWrapRepeat is a constant
-// of the variant. Heights are read with texelFetch and filtered by the shared code, so the GPU and
-// the CPU agree to the bit (R16 and R32F textures: never 8 bits).
+// of the variant. Two flavours (VariantKey::flavour): `verify` reads texels with texelFetch and
+// the shared code filters them, so the GPU and the CPU agree to the bit; `production`
+// (PX_HAS_HARDWARE_SAMPLING) lets the texture units filter, as an engine would. Heights are R16 or
+// R32F textures, never 8 bits; the samplers' wrap mode is the material's.
 
 int pxFetches = 0;
 
@@ -30,3 +32,47 @@ vec2 pxConeTexel(ivec2 texel) {
 float pxMaxMipNode(int level, ivec2 node) {
     return texelFetch(pxMaxMipAtlas, ivec2(node.x, pxMaxMipRows[level] + node.y), 0).r;
 }
+
+#if defined(PX_HAS_HARDWARE_SAMPLING)
+// The production flavour's reads (called by pxHeight, pxConeSample, pxCellCorners and
+// pxConeCorners in ../trace/). The uv derivatives the hardware selects the height mip from: zero
+// (level 0, bilinear) unless a marching technique in the surface pass sets the pixel's footprint
+// (then trilinear, as textureGrad in an engine's parallax loop).
+vec2 pxHeightDx = vec2(0.0f, 0.0f);
+vec2 pxHeightDy = vec2(0.0f, 0.0f);
+
+void pxUseHeightGradients(vec2 dx, vec2 dy) {
+    pxHeightDx = dx;
+    pxHeightDy = dy;
+}
+
+float pxHeightFiltered(vec2 uv) {
+    return textureGrad(pxHeightMap, uv, pxHeightDx, pxHeightDy).r;
+}
+
+// Cone maps are filtered bilinearly at level 0: (height, sqrt(cone ratio)).
+vec2 pxConeFiltered(vec2 uv) {
+    return textureLod(pxConeMap, uv, 0.0f).rg;
+}
+
+// textureGather at the centre of the cell's 2x2 footprint returns its texels as
+// (x0 y1, x1 y1, x1 y0, x0 y0) (y1 the row below): reordered to (h00, h10, h01, h11).
+vec2 pxGatherUv(ivec2 cell) {
+    return vec2(float(cell.x + 1) / float(pxMapSize.x), float(cell.y + 1) / float(pxMapSize.y));
+}
+
+vec4 pxHeightGather(ivec2 cell) {
+    vec4 g = textureGather(pxHeightMap, pxGatherUv(cell), 0);
+    return vec4(g.w, g.z, g.x, g.y);
+}
+
+vec4 pxConeGatherHeights(ivec2 cell) {
+    vec4 g = textureGather(pxConeMap, pxGatherUv(cell), 0);
+    return vec4(g.w, g.z, g.x, g.y);
+}
+
+vec4 pxConeGatherRoots(ivec2 cell) {
+    vec4 g = textureGather(pxConeMap, pxGatherUv(cell), 1);
+    return vec4(g.w, g.z, g.x, g.y);
+}
+#endif

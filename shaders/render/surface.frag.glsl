@@ -76,6 +76,9 @@ void main() {
     pxUseHeightLevel(0); // the level the cone map and the pyramid describe
 #else
     pxUseHeightLevel(footprintLevel);
+#if defined(PX_HAS_HARDWARE_SAMPLING)
+    pxUseHeightGradients(uvDx, uvDy); // the hardware picks the mip, trilinear, as in an engine
+#endif
 #endif
     t = pxTraceRay(uv, P);
     hit = uv + P * t;
@@ -105,6 +108,9 @@ void main() {
     vec3 n = pxSafeNormalize(Tn * m.x - Bn * (m.y * pxNormalGreenSign) + N * m.z, N);
 #elif defined(PX_HAS_HEIGHT_NORMALS)
     pxUseHeightLevel(footprintLevel);
+#if defined(PX_HAS_HARDWARE_SAMPLING)
+    pxUseHeightGradients(uvDx, uvDy);
+#endif
 #if defined(PX_HAS_SOBEL_NORMALS)
     vec2 slope = pxHeightSlopeSobel(hit);
 #else

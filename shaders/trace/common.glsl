@@ -73,6 +73,9 @@ vec2 pxLerp2(vec2 x, vec2 y, float a) {
 // One bilinear sample of the height map: one fetch.
 float pxHeight(vec2 uv) {
     pxFetches += 1;
+#if defined(PX_HAS_HARDWARE_SAMPLING)
+    return pxHeightFiltered(uv); // the production flavour: the texture unit filters
+#else
     vec2 c = pxCellCoords(uv);
     vec2 base = floor(c);
     vec2 f = c - base;
@@ -82,12 +85,16 @@ float pxHeight(vec2 uv) {
     float h01 = pxHeightTexel(ivec2(q.x, q.w));
     float h11 = pxHeightTexel(ivec2(q.y, q.w));
     return pxLerp(pxLerp(h00, h10, f.x), pxLerp(h01, h11, f.x), f.y);
+#endif
 }
 
 // One bilinear sample of the cone map: (height, cone ratio). G holds sqrt(ratio)
 // (docs/conventions.md §4), interpolated before squaring as a GPU sampler would.
 vec2 pxConeSample(vec2 uv) {
     pxFetches += 1;
+#if defined(PX_HAS_HARDWARE_SAMPLING)
+    vec2 s = pxConeFiltered(uv);
+#else
     vec2 c = pxCellCoords(uv);
     vec2 base = floor(c);
     vec2 f = c - base;
@@ -97,15 +104,20 @@ vec2 pxConeSample(vec2 uv) {
     vec2 d = pxConeTexel(ivec2(q.x, q.w));
     vec2 e = pxConeTexel(ivec2(q.y, q.w));
     vec2 s = pxLerp2(pxLerp2(a, b, f.x), pxLerp2(d, e, f.x), f.y);
+#endif
     return vec2(s.x, s.y * s.y);
 }
 
 // The four corners of a cell (h00, h10, h01, h11): one gather.
 vec4 pxCellCorners(ivec2 cell) {
     pxFetches += 1;
+#if defined(PX_HAS_HARDWARE_SAMPLING)
+    return pxHeightGather(cell);
+#else
     ivec4 q = pxFootprint(cell);
     return vec4(pxHeightTexel(ivec2(q.x, q.z)), pxHeightTexel(ivec2(q.y, q.z)),
                 pxHeightTexel(ivec2(q.x, q.w)), pxHeightTexel(ivec2(q.y, q.w)));
+#endif
 }
 
 // Nothing lies above the highest texel: every march may start where the ray drops to it.

@@ -14,14 +14,20 @@ struct PxConeCorners {
 // The four corner texels of a cell in the cone map: one gather.
 PxConeCorners pxConeCorners(ivec2 cell) {
     pxFetches += 1;
+    PxConeCorners k;
+#if defined(PX_HAS_HARDWARE_SAMPLING)
+    k.h = pxConeGatherHeights(cell);
+    vec4 r = pxConeGatherRoots(cell);
+    k.c = vec4(r.x * r.x, r.y * r.y, r.z * r.z, r.w * r.w);
+#else
     ivec4 q = pxFootprint(cell);
     vec2 a = pxConeTexel(ivec2(q.x, q.z));
     vec2 b = pxConeTexel(ivec2(q.y, q.z));
     vec2 d = pxConeTexel(ivec2(q.x, q.w));
     vec2 e = pxConeTexel(ivec2(q.y, q.w));
-    PxConeCorners k;
     k.h = vec4(a.x, b.x, d.x, e.x);
     k.c = vec4(a.y * a.y, b.y * b.y, d.y * d.y, e.y * e.y);
+#endif
     return k;
 }
 

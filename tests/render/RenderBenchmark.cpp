@@ -1,18 +1,23 @@
-// Frame time per technique at 512 x 512 and 1920 x 1080: the built-in bricks (512 x 512 heights,
-// procedural albedo, height-derived normals, Blinn-Phong) on a plane filling the frame, seen at 55
-// degrees from the normal. Each frame is timed alone: a steady clock around glFinish on llvmpipe,
-// a GL timer query on real GPUs (FrameTimer.h). Compilation and bakes happen before timing.
-// The table at the end gives each technique's median against `none` measured in the same run.
-//   render-bench [--benchmark_filter=512] [--benchmark_repetitions=N]   (N > 1: medians)
+// Frame time per technique and kernel flavour at 512 x 512 and 1920 x 1080: the built-in bricks
+// (512 x 512 heights, procedural albedo, height-derived normals, Blinn-Phong) on a plane filling
+// the frame, seen at 55 degrees from the normal. Each frame is timed alone: a steady clock around
+// glFinish on llvmpipe, a GL timer query on real GPUs (FrameTimer.h). Compilation and bakes happen
+// before timing. The table at the end gives each technique's median against `none` and the
+// production kernels' against the verify kernels', all measured in the same run.
+//   render-bench [--sizes=WxH,...] [--csv=FILE] [--benchmark_filter=512]
+//                [--benchmark_repetitions=N]   (N > 1: medians)
 
 #include "FrameTimer.h"
 #include "RenderTestSupport.h"
 #include "Renderer.h"
+#include "parallax/io/AtomicWrite.h"
 
 #include <benchmark/benchmark.h>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <set>
+#include <sstream>
 
 using namespace px;
 
@@ -37,7 +42,7 @@ Bench& bench() {
     return b;
 }
 
-void frame(benchmark::State& state, Technique technique, glm::ivec2 size) {
+void frame(benchmark::State& state, Technique technique, KernelFlavour kernels, glm::ivec2 size) {
     Bench& b = bench();
     Result<RenderTarget> target = RenderTarget::create(size, TargetFormat::Rgba8);
     if (!target) {
@@ -50,7 +55,9 @@ void frame(benchmark::State& state, Technique technique, glm::ivec2 size) {
     camera.elevationDeg = 35.0f;
     camera.distance = 1.9f;
     target->bind();
-    auto draw = [&] { (void)b.renderer->draw(*b.gpu, m, camera, {}, {}, size); };
+    DrawOptions options;
+    options.kernels = kernels;
+    auto draw = [&] { (void)b.renderer->draw(*b.gpu, m, camera, {}, options, size); };
     timeFrames(draw, 1, 1, b.renderer->glInfo()); // compile, bake, first-use costs
     for (auto _ : state) {
         const FrameTiming t = timeFrames(draw, 1, 0, b.renderer->glInfo());
@@ -73,9 +80,10 @@ public:
             const bool median = r.run_type == Run::RT_Aggregate && r.aggregate_name == "median";
             if (r.run_type != Run::RT_Iteration && !median)
                 continue;
-            // "pom/512x512/min_time:0.500/manual_time" -> "pom/512x512"
+            // "pom/production/512x512/min_time:0.500/manual_time" -> "pom/production/512x512"
             const std::string name = r.benchmark_name();
-            const std::string key = name.substr(0, name.find('/', name.find('/') + 1));
+            const std::size_t second = name.find('/', name.find('/') + 1);
+            const std::string key = name.substr(0, name.find('/', second + 1));
             if (median || !medians.count(key))
                 ms[key] = r.GetAdjustedRealTime();
             if (median)
@@ -85,40 +93,103 @@ public:
     }
 };
 
+// "WxH,WxH" into named sizes; empty on a malformed list.
+std::vector<std::pair<std::string, glm::ivec2>> parseSizes(const std::string& text) {
+    std::vector<std::pair<std::string, glm::ivec2>> sizes;
+    std::stringstream in(text);
+    for (std::string part; std::getline(in, part, ',');) {
+        int w = 0, h = 0;
+        char x = 0;
+        std::stringstream one(part);
+        if (!(one >> w >> x >> h) || x != 'x' || w < 1 || h < 1 || !one.eof())
+            return {};
+        sizes.emplace_back(part, glm::ivec2(w, h));
+    }
+    return sizes;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
-    const std::vector<std::pair<std::string, glm::ivec2>> sizes{{"512x512", {512, 512}},
-                                                                {"1920x1080", {1920, 1080}}};
+    std::vector<std::pair<std::string, glm::ivec2>> sizes{{"512x512", {512, 512}},
+                                                          {"1920x1080", {1920, 1080}}};
+    std::string csvPath;
+    // Our own options first; the rest goes to Google Benchmark.
+    int kept = 1;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strncmp(argv[i], "--sizes=", 8) == 0) {
+            sizes = parseSizes(argv[i] + 8);
+            if (sizes.empty()) {
+                std::fprintf(stderr, "error: --sizes=%s is not WxH[,WxH...]\n", argv[i] + 8);
+                return 2;
+            }
+        } else if (std::strncmp(argv[i], "--csv=", 6) == 0) {
+            csvPath = argv[i] + 6;
+        } else {
+            argv[kept++] = argv[i];
+        }
+    }
+    argc = kept;
+    const KernelFlavour flavours[] = {KernelFlavour::Production, KernelFlavour::Verify};
+    auto key = [](const TechniqueInfo& t, KernelFlavour f, const std::string& size) {
+        return std::string(t.name) + "/" + std::string(shader::kernelFlavourName(f)) + "/" + size;
+    };
     for (const auto& [sizeName, size] : sizes) {
         for (const TechniqueInfo& t : allTechniques()) {
-            const Technique id = t.id;
-            const glm::ivec2 s = size;
-            benchmark::RegisterBenchmark((std::string(t.name) + "/" + sizeName).c_str(),
-                                         [id, s](benchmark::State& state) { frame(state, id, s); })
-                ->UseManualTime()
-                ->Unit(benchmark::kMillisecond)
-                ->MinTime(0.5);
+            for (KernelFlavour f : flavours) {
+                const Technique id = t.id;
+                const glm::ivec2 s = size;
+                benchmark::RegisterBenchmark(
+                    key(t, f, sizeName).c_str(),
+                    [id, f, s](benchmark::State& state) { frame(state, id, f, s); })
+                    ->UseManualTime()
+                    ->Unit(benchmark::kMillisecond)
+                    ->MinTime(0.5);
+            }
         }
     }
     benchmark::Initialize(&argc, argv);
     Collector collector;
     benchmark::RunSpecifiedBenchmarks(&collector);
-    std::printf("\nframe time against none, same run:\n%-14s", "technique");
+    std::printf("\nframe time, production kernels, against none and against the verify kernels "
+                "(same run):\n%-14s",
+                "technique");
     for (const auto& [sizeName, size] : sizes)
-        std::printf(" %22s", sizeName.c_str());
+        std::printf(" %38s", sizeName.c_str());
     std::printf("\n");
+    std::string csv = "technique,size,production_ms,verify_ms,production_vs_none,"
+                      "production_vs_verify,renderer\n";
+    const std::string renderer = bench().renderer->glInfo().renderer;
+    auto find = [&](const std::string& k) {
+        const auto it = collector.ms.find(k);
+        return it == collector.ms.end() ? -1.0 : it->second;
+    };
     for (const TechniqueInfo& t : allTechniques()) {
         std::printf("%-14s", t.name.data());
         for (const auto& [sizeName, size] : sizes) {
-            const auto it = collector.ms.find(std::string(t.name) + "/" + sizeName);
-            const auto base = collector.ms.find("none/" + sizeName);
-            if (it == collector.ms.end() || base == collector.ms.end())
-                std::printf(" %22s", "-");
-            else
-                std::printf(" %10.1f ms %7.2fx", it->second, it->second / base->second);
+            const double production = find(key(t, KernelFlavour::Production, sizeName));
+            const double verify = find(key(t, KernelFlavour::Verify, sizeName));
+            const double none =
+                find(key(info(Technique::None), KernelFlavour::Production, sizeName));
+            if (production < 0.0 || verify < 0.0 || none <= 0.0) {
+                std::printf(" %38s", "-");
+                continue;
+            }
+            std::printf(" %10.1f ms %7.2fx none %7.3fx verify", production, production / none,
+                        production / verify);
+            char row[256];
+            std::snprintf(row, sizeof row, "%s,%s,%.3f,%.3f,%.4f,%.4f,\"%s\"\n", t.name.data(),
+                          sizeName.c_str(), production, verify, production / none,
+                          production / verify, renderer.c_str());
+            csv += row;
         }
         std::printf("\n");
+    }
+    if (!csvPath.empty()) {
+        if (Status written = writeTextFile(csvPath, csv); !written) {
+            std::fprintf(stderr, "error: %s\n", written.error().message.c_str());
+            return 1;
+        }
     }
     return 0;
 }

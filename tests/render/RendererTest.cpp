@@ -128,6 +128,7 @@ void RendererTest::renderedHitsAreTheCpuTracersHits() {
     const OrbitCamera cam = camera(25.0f, 40.0f, 2.2f);
     DrawOptions options;
     options.output = ShaderOutput::Surface;
+    options.kernels = KernelFlavour::Verify; // the kernels equal to the CPU's
     Result<Image> hits = m_renderer->renderImage(**gpu, m, cam, {}, options, kSize);
     QVERIFY(hits.ok());
 

@@ -90,6 +90,14 @@ private slots:
         QVERIFY2(compare->statusText().contains("8 × 8 rays per view angle"),
                  qPrintable(compare->statusText()));
         QCOMPARE(compare->raysField()->text(), QString("8 per side"));
+        // The Cost box shows its whole text.
+        QComboBox* axis = compare->axisCombo();
+        QTRY_VERIFY(axis->width() >= axis->fontMetrics().horizontalAdvance(axis->currentText()));
+        // GPU milliseconds measured on this machine's GL (llvmpipe on CI): a third cost panel,
+        // which exists only when every pooled point was timed.
+        QCOMPARE(compare->chart()->axes.back(), CostAxis::GpuTime);
+        QCOMPARE(compare->axisCombo()->count(), 3);
+        QVERIFY(compare->statusText().contains("GPU: ")); // the renderer and timing method
         WorkPrecisionView* view = compare->chartView();
         QVERIFY(view->hasPanel());
         view->resize(700, 400);

@@ -140,7 +140,9 @@ Status BenchRun::tracePolar(double polar, BenchReport& report) {
     }
 
     for (const BenchSetting& setting : m_config.settings) {
-        HitErrorAccumulator pooledErrors;
+        HitErrorAccumulator pooledErrors, pooledGpuErrors;
+        int gpuHitCount = 0;
+        std::string gpuKernels;
         double pooledNs = 0.0, pooledGpuMs = 0.0;
         int gpuCount = 0;
         bool timed = m_config.timingRepeats > 0;
@@ -188,7 +190,15 @@ Status BenchRun::tracePolar(double polar, BenchReport& report) {
                 request.scale = c.scale;
                 request.polarDeg = polar;
                 request.azimuthDeg = m_config.azimuthDeg;
+                request.rays = m_config.rays;
                 Result<GpuFrameTiming> gpu = m_config.gpuTimer(request);
+                if (gpu && gpu->hits.size() == c.reference.size()) {
+                    row.gpuStats = measureHits(gpu->hits, c.reference, field.width, field.height);
+                    row.gpuKernels = gpu->kernels;
+                    pooledGpuErrors.add(gpu->hits, c.reference, field.width, field.height);
+                    gpuKernels = gpu->kernels;
+                    ++gpuHitCount;
+                }
                 if (gpu) {
                     row.gpuMsPerFrame = gpu->msPerFrame;
                     row.gpuRenderer = gpu->renderer;
@@ -220,6 +230,10 @@ Status BenchRun::tracePolar(double polar, BenchReport& report) {
         if (gpuCount > 0 && gpuCount == static_cast<int>(conditions.size()))
             pooled.gpuMsPerFrame = pooledGpuMs / gpuCount;
         pooled.gpuRenderer = pooledRenderer;
+        if (gpuHitCount > 0 && gpuHitCount == static_cast<int>(conditions.size())) {
+            pooled.gpuStats = pooledGpuErrors.stats();
+            pooled.gpuKernels = gpuKernels;
+        }
         report.pooled.push_back(std::move(pooled));
     }
     return success();

@@ -67,6 +67,11 @@ void appendRow(std::string& csv, const BenchReport& report, const BenchRow& row)
         row.cpuNsPerRay ? number("%.1f", *row.cpuNsPerRay) : "",
         row.gpuMsPerFrame ? number("%.3f", *row.gpuMsPerFrame) : "",
         field(row.gpuRenderer),
+        row.gpuStats ? row.gpuKernels : "",
+        row.gpuStats ? number("%.9g", row.gpuStats->meanError) : "",
+        row.gpuStats ? number("%.9g", row.gpuStats->p99Error) : "",
+        row.gpuStats ? number("%.9g", row.gpuStats->maxError) : "",
+        row.gpuStats ? number("%.9g", row.gpuStats->meanFetches) : "",
     };
     bool first = true;
     for (const std::string& cell : cells) {
@@ -138,8 +143,9 @@ Result<BenchReport> parseBenchCsv(std::string_view text, const std::string& sour
     std::string joined;
     for (const std::string& h : header)
         joined += (joined.empty() ? "" : ",") + h;
-    if (joined != kBenchCsvHeader)
+    if (joined != kBenchCsvHeader && joined != kBenchCsvHeaderV1)
         return fileError(source, "not a bench report: the header differs from the bench's");
+    const bool gpuErrors = joined == kBenchCsvHeader;
     BenchReport report;
     report.polarDeg.clear();
     int line = 1;
@@ -197,6 +203,14 @@ Result<BenchReport> parseBenchCsv(std::string_view text, const std::string& sour
         if (!ok)
             return bad("a value is not a number");
         row.gpuRenderer = f[26];
+        if (gpuErrors && !f[27].empty()) {
+            HitErrorStats g;
+            if (!(parseNumber(f[28], g.meanError) && parseNumber(f[29], g.p99Error) &&
+                  parseNumber(f[30], g.maxError) && parseNumber(f[31], g.meanFetches)))
+                return bad("a value is not a number");
+            row.gpuKernels = f[27];
+            row.gpuStats = g;
+        }
         if (std::find(report.polarDeg.begin(), report.polarDeg.end(), row.polarDeg) ==
             report.polarDeg.end())
             report.polarDeg.push_back(row.polarDeg);

@@ -96,7 +96,9 @@ WorkPrecisionChart makeWorkPrecisionChart(const BenchReport& report, double erro
                     series = panel.series.insert(panel.series.end(), {row.setting.technique, {}});
                 WorkPrecisionPoint point;
                 point.cost = *cost;
-                point.error = row.stats.p99Error;
+                // Against GPU time, the error of what the GPU kernels drew where it was measured.
+                point.error = axis == CostAxis::GpuTime && row.gpuStats ? row.gpuStats->p99Error
+                                                                        : row.stats.p99Error;
                 point.plotError = std::max(point.error, errorFloor);
                 point.maxError = row.stats.maxError;
                 point.plotMaxError = std::max(point.maxError, errorFloor);

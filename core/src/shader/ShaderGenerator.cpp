@@ -69,6 +69,7 @@ std::vector<std::string> definesFor(const VariantKey& k) {
     on(k.tbn == TbnSource::Derivatives, "PX_HAS_DERIVATIVE_TBN");
     on(k.output == ShaderOutput::Surface, "PX_HAS_SURFACE_OUTPUT");
     on(k.output == ShaderOutput::Trace, "PX_HAS_TRACE_OUTPUT");
+    on(k.flavour == KernelFlavour::Production && k.readsHeightMap(), "PX_HAS_HARDWARE_SAMPLING");
     // Derived: what the surface shader computes at all.
     const bool mesh = k.output != ShaderOutput::Trace;
     const bool parallax = info(k.technique).parallax;
@@ -79,10 +80,25 @@ std::vector<std::string> definesFor(const VariantKey& k) {
     return d;
 }
 
+// What a stage's text depends on besides its defines and files.
+struct StageOptions {
+    std::string title;        // the header's first line: which variant and stage
+    bool wrapRepeat = true;   // pxWrapRepeat, a constant of the variant
+    bool precise = true;      // PX_PRECISE as `precise` (verify) or nothing (production)
+    bool countFetches = true; // keep the fetch counter (only where an output writes it)
+};
+
+// The production colour output writes no fetch count: its counting statements go (which leaves
+// pxFetches unreachable, so it is not declared either). Newlines stay, so #line still holds.
+void removeFetchCounter(std::string& text) {
+    static const std::regex counting(R"([ \t]*pxFetches\s*\+=\s*[^;\n]*;[ \t]*)");
+    text = std::regex_replace(text, counting, "");
+}
+
 // `inputs` receives the names of the stage inputs (`in` globals) the kept code reads.
-Result<GeneratedShader> generateStage(const VariantKey& key,
+Result<GeneratedShader> generateStage(const StageOptions& options,
                                       const std::vector<std::string>& defines,
-                                      const std::vector<std::string>& files, const char* stage,
+                                      const std::vector<std::string>& files,
                                       std::set<std::string>* inputs = nullptr) {
     GeneratedShader s;
     s.defines = defines;
@@ -98,6 +114,8 @@ Result<GeneratedShader> generateStage(const VariantKey& key,
         Result<std::string> pre = shader::preprocess(*text, defineSet, path);
         if (!pre)
             return pre.error();
+        if (!options.countFetches)
+            removeFetchCounter(*pre);
         Result<std::vector<shader::GlslItem>> split =
             shader::splitItems(*pre, static_cast<int>(k + 1), path);
         if (!split)
@@ -121,11 +139,9 @@ Result<GeneratedShader> generateStage(const VariantKey& key,
         }
     }
 
-    char keyHex[16];
-    std::snprintf(keyHex, sizeof keyHex, "0x%04x", key.bits());
     std::string text = "#version 430 core\n";
-    text += "// Parallax Studio shader variant " + key.name() + " (key " + keyHex + "), " + stage +
-            " stage.\n// Generated from shaders/ by core/src/shader/ShaderGenerator.cpp: only the "
+    text += "// Parallax Studio " + options.title +
+            ".\n// Generated from shaders/ by core/src/shader/ShaderGenerator.cpp: only the "
             "code this variant reaches.\n// #line L S: source S, line L - S * " +
             std::to_string(kLineBase) +
             " of it (the line carries the source: Mesa reports none):\n";
@@ -137,7 +153,7 @@ Result<GeneratedShader> generateStage(const VariantKey& key,
     for (const std::string& d : defines)
         text += "#define " + d + " 1\n";
     if (external.count("PX_PRECISE"))
-        text += "#define PX_PRECISE precise\n";
+        text += options.precise ? "#define PX_PRECISE precise\n" : "#define PX_PRECISE\n";
     for (const shader::Binding& b : shader::bindings()) {
         if (external.count(b.name)) {
             text += shader::declaration(b) + "\n";
@@ -146,7 +162,7 @@ Result<GeneratedShader> generateStage(const VariantKey& key,
     }
     if (external.count("pxWrapRepeat"))
         text += std::string("const bool pxWrapRepeat = ") +
-                (key.wrap == WrapMode::Repeat ? "true" : "false") + ";\n";
+                (options.wrapRepeat ? "true" : "false") + ";\n";
 
     int file = 0;
     int nextLine = -1;
@@ -178,29 +194,53 @@ Result<GeneratedProgram> generateProgram(const VariantKey& requested) {
     const VariantKey key = canonical(requested);
     if (Status valid = key.validate(); !valid)
         return valid.error();
-    const std::vector<std::string> defines = definesFor(key);
     const bool trace = key.output == ShaderOutput::Trace;
+    const bool production = key.flavour == KernelFlavour::Production;
 
     GeneratedProgram program;
     program.key = key;
     // The fragment stage first: the vertex stage writes only the outputs it reads.
     std::vector<std::string> files = libraryFiles();
     files.push_back(trace ? "render/trace.frag.glsl" : "render/surface.frag.glsl");
+    char keyHex[16];
+    std::snprintf(keyHex, sizeof keyHex, "0x%04x", key.bits());
+    StageOptions fragmentOptions;
+    fragmentOptions.title =
+        "shader variant " + key.name() + " (key " + keyHex + "), fragment stage";
+    fragmentOptions.wrapRepeat = key.wrap == WrapMode::Repeat;
+    fragmentOptions.precise = !production;
+    fragmentOptions.countFetches = !production || key.output != ShaderOutput::Color;
     std::set<std::string> inputs;
-    Result<GeneratedShader> fragment = generateStage(key, defines, files, "fragment", &inputs);
+    Result<GeneratedShader> fragment =
+        generateStage(fragmentOptions, definesFor(key), files, &inputs);
     if (!fragment)
         return fragment.error();
-    std::vector<std::string> vertexDefines = defines;
+
+    // The vertex stage reads no feature of the key, only which outputs the fragment stage keeps
+    // (Filament's per-stage filter): its key, name and text are those alone.
+    program.vertexKey.trace = trace;
+    for (const std::string& input : inputs)
+        program.vertexKey.outputs.push_back(input);
+    std::vector<std::string> vertexDefines;
     for (const std::string& input : inputs)
         vertexDefines.push_back("PX_FRAGMENT_READS_" + macroName(input));
+    StageOptions vertexOptions;
+    vertexOptions.title = "vertex variant " + program.vertexKey.name() + ", vertex stage";
     Result<GeneratedShader> vertex =
-        generateStage(key, vertexDefines,
-                      {trace ? "render/trace.vert.glsl" : "render/surface.vert.glsl"}, "vertex");
+        generateStage(vertexOptions, vertexDefines,
+                      {trace ? "render/trace.vert.glsl" : "render/surface.vert.glsl"});
     if (!vertex)
         return vertex.error();
     program.vertex = std::move(*vertex);
     program.fragment = std::move(*fragment);
     return program;
+}
+
+std::string VertexKey::name() const {
+    std::string n = trace ? "trace" : "mesh";
+    for (const std::string& output : outputs)
+        n += "+" + output;
+    return n;
 }
 
 std::string mapCompilerLog(std::string_view log, const std::vector<std::string>& sources) {

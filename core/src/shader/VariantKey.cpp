@@ -2,12 +2,16 @@
 
 #include "parallax/material/MaterialNames.h"
 
+#include <array>
+
 namespace px {
 
 namespace {
 
 constexpr int kTechniqueCount = static_cast<int>(Technique::Exact) + 1;
 static_assert(kTechniqueCount <= 16, "the technique takes 4 bits of a variant key");
+
+constexpr std::array<std::string_view, 2> kFlavourNames{"production", "verify"};
 
 } // namespace
 
@@ -21,6 +25,7 @@ std::uint32_t VariantKey::bits() const {
     b |= (lighting == LightingModel::MetallicRoughness ? 1u : 0u) << 10;
     b |= (tbn == TbnSource::Derivatives ? 1u : 0u) << 11;
     b |= static_cast<std::uint32_t>(output) << 12;
+    b |= (flavour == KernelFlavour::Verify ? 1u : 0u) << 14;
     return b;
 }
 
@@ -41,6 +46,7 @@ std::optional<VariantKey> VariantKey::fromBits(std::uint32_t b) {
     k.lighting = (b >> 10) & 1u ? LightingModel::MetallicRoughness : LightingModel::BlinnPhong;
     k.tbn = (b >> 11) & 1u ? TbnSource::Derivatives : TbnSource::VertexTangents;
     k.output = static_cast<ShaderOutput>(output);
+    k.flavour = (b >> 14) & 1u ? KernelFlavour::Verify : KernelFlavour::Production;
     return k;
 }
 
@@ -88,6 +94,8 @@ std::string VariantKey::name() const {
         n += "+surface";
     else if (output == ShaderOutput::Trace)
         n += "+trace";
+    if (flavour == KernelFlavour::Verify)
+        n += "+verify";
     return n;
 }
 
@@ -111,8 +119,10 @@ VariantKey canonical(VariantKey k) {
         k.wrap == WrapMode::Repeat)
         k.technique =
             Technique::None; // nothing reads the hit (no map, no discard): it draws as none
-    if (!k.readsHeightMap())
+    if (!k.readsHeightMap()) {
         k.wrap = WrapMode::Repeat; // the other maps' wrap is sampler state, not shader code
+        k.flavour = KernelFlavour::Production; // the flavours differ only in height and cone reads
+    }
     return k;
 }
 
@@ -141,5 +151,21 @@ VariantKey variantFor(const Material& m, ShaderOutput output) {
     k.output = output;
     return canonical(k);
 }
+
+namespace shader {
+
+std::optional<KernelFlavour> parseKernelFlavour(std::string_view name) {
+    for (std::size_t i = 0; i < kFlavourNames.size(); ++i) {
+        if (kFlavourNames[i] == name)
+            return static_cast<KernelFlavour>(i);
+    }
+    return std::nullopt;
+}
+
+std::string_view kernelFlavourName(KernelFlavour flavour) {
+    return kFlavourNames.at(static_cast<std::size_t>(flavour));
+}
+
+} // namespace shader
 
 } // namespace px

@@ -1,5 +1,6 @@
 #include "parallax/trace/Tracer.h"
 
+#include "HardwareModelKernel.h"
 #include "TraceKernel.h"
 #include "parallax/bake/ConeMapBaker.h"
 
@@ -74,7 +75,17 @@ Result<Tracer> Tracer::create(const TraceMaps& maps, Technique technique, const 
 }
 
 TraceResult Tracer::trace(glm::dvec2 uv0, glm::vec2 rawP) const {
+    if (m_subTexelBits > 0) {
+        kernel::HardwareModelKernel k;
+        k.subTexelBits = m_subTexelBits;
+        return traceWith(k, uv0, rawP);
+    }
     kernel::TraceKernel k;
+    return traceWith(k, uv0, rawP);
+}
+
+template <typename Kernel>
+TraceResult Tracer::traceWith(Kernel& k, glm::dvec2 uv0, glm::vec2 rawP) const {
     const HeightField& field = *m_maps.height;
     k.pxMapSize = glm::ivec2(field.width, field.height);
     k.pxWrapRepeat = m_maps.wrap == WrapMode::Repeat;

@@ -14,6 +14,7 @@ private slots:
     void headerAndRows();
     void fields();
     void readsBackWhatItWrote();
+    void readsReportsWithoutGpuErrors();
     void refusesOtherFiles();
 };
 
@@ -48,6 +49,13 @@ BenchReport report() {
     pooled.setting = defaultSetting(Technique::Pyramid);
     pooled.gpuMsPerFrame = 241.5;
     pooled.gpuRenderer = "llvmpipe (LLVM 15.0.6, 256 bits) [software]";
+    HitErrorStats gpu;
+    gpu.meanError = 0.25;
+    gpu.p99Error = 0.5;
+    gpu.maxError = 2.0;
+    gpu.meanFetches = 18.5;
+    pooled.gpuStats = gpu;
+    pooled.gpuKernels = "production";
     r.pooled.push_back(pooled);
     return r;
 }
@@ -65,17 +73,18 @@ void BenchCsvTest::headerAndRows() {
     const QStringList l = lines(benchCsv(report()));
     QCOMPARE(l.size(), 3);
     QCOMPARE(l[0], QString::fromLatin1(kBenchCsvHeader.data(), kBenchCsvHeader.size()));
-    QCOMPARE(l[0].split(',').size(), 27);
+    QCOMPARE(l[0].split(',').size(), 32);
 }
 
 void BenchCsvTest::fields() {
     const QStringList l = lines(benchCsv(report()));
     QCOMPARE(l[1], QString("\"bricks, old.png\",256,128,repeat,0.05,80,35,128,pom,layers 8-32,1,"
                            "8,32,,,,1.5,12.25,40,321,0,27.5,33,33,812.3,,"
-                           "no GPU timing: no renderer"));
+                           "no GPU timing: no renderer,,,,,"));
     QCOMPARE(l[2], QString("all,,,repeat,,80,35,128,pyramid,nodes 65536,1,,,,,65536,1.5,12.25,40,"
                            "321,0,27.5,33,33,812.3,241.500,"
-                           "\"llvmpipe (LLVM 15.0.6, 256 bits) [software]\""));
+                           "\"llvmpipe (LLVM 15.0.6, 256 bits) [software]\","
+                           "production,0.25,0.5,2,18.5"));
 }
 
 void BenchCsvTest::readsBackWhatItWrote() {
@@ -88,7 +97,31 @@ void BenchCsvTest::readsBackWhatItWrote() {
     QCOMPARE(back->pooled[0].setting.params.maxSteps, 65536);
     QCOMPARE(back->rows[0].setting.params.maxLayers, 32);
     QCOMPARE(back->polarDeg, std::vector<double>{80.0});
+    QVERIFY(!back->rows[0].gpuStats.has_value());
+    QVERIFY(back->pooled[0].gpuStats.has_value());
+    QCOMPARE(back->pooled[0].gpuStats->p99Error, 0.5);
+    QCOMPARE(back->pooled[0].gpuKernels, std::string("production"));
     QCOMPARE(benchCsv(*back), csv);
+}
+
+// Reports written before the GPU kernels' errors were columns still read (docs/bench/ holds one).
+void BenchCsvTest::readsReportsWithoutGpuErrors() {
+    std::string csv = benchCsv(report());
+    QStringList l = lines(csv);
+    std::string old = std::string(kBenchCsvHeaderV1) + "\n";
+    for (int i = 1; i < l.size(); ++i) {
+        QStringList f = l[i].split(',');
+        old += f.mid(0, f.size() - 5).join(',').toStdString() + "\n";
+    }
+    Result<BenchReport> back = parseBenchCsv(old, "v1.csv");
+    QVERIFY2(back.ok(), back.ok() ? "" : back.error().message.c_str());
+    QCOMPARE(back->pooled.size(), std::size_t(1));
+    QVERIFY(!back->pooled[0].gpuStats.has_value());
+    QCOMPARE(back->pooled[0].gpuMsPerFrame.value_or(0.0), 241.5);
+    // A V1 header with the new columns' values is a malformed file, not a silent misread.
+    QVERIFY(!parseBenchCsv(std::string(kBenchCsvHeaderV1) + "\n" + l[2].toStdString() + "\n",
+                           "mixed.csv")
+                 .ok());
 }
 
 void BenchCsvTest::refusesOtherFiles() {

@@ -92,6 +92,15 @@ void WorkPrecisionTest::costAxes() {
     // A GPU axis only when every row has a GPU time.
     r.pooled[0].gpuMsPerFrame = 3.0;
     QCOMPARE(makeWorkPrecisionChart(r).axes.size(), std::size_t(2));
+    // Against GPU time the error is the GPU kernels' own where they were measured.
+    for (BenchRow& row : r.pooled)
+        row.gpuMsPerFrame = 0.1 * row.stats.meanFetches;
+    r.pooled[1].gpuStats = HitErrorStats{};
+    r.pooled[1].gpuStats->p99Error = 1.25;
+    chart = makeWorkPrecisionChart(r);
+    QCOMPARE(chart.axes.back(), CostAxis::GpuTime);
+    QCOMPARE(chart.panel(0, 2).series[0].points[1].error, 1.25); // pom 32 at 80 degrees
+    QCOMPARE(chart.panel(0, 0).series[0].points[1].error, 1.0);  // the CPU's on the others
 }
 
 QTEST_APPLESS_MAIN(WorkPrecisionTest)

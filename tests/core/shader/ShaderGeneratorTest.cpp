@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 
 using namespace px;
@@ -95,6 +96,8 @@ private slots:
     void lineDirectivesPointAtTheirFiles();
     void compilerLogsNameTheFile();
     void invalidKeysAreRefused();
+    void productionKernelsSampleInHardware();
+    void vertexStagesAreKeyedByWhatTheyRead();
 
 private:
     std::vector<GeneratedProgram> m_all; // every variant, generated once
@@ -261,6 +264,86 @@ void ShaderGeneratorTest::invalidKeysAreRefused() {
     Result<GeneratedProgram> p = generateProgram(keyOf(Technique::Normal, NormalSource::None));
     QVERIFY(!p.ok());
     QVERIFY(p.error().message.find("normal source") != std::string::npos);
+}
+
+// Production: the texture units filter (textureGrad, textureLod on the cone map, textureGather
+// for a cell's corners), no texelFetch of height or cones, no `precise`, and no fetch counter in
+// the colour output, which writes none. Verify: texel reads filtered in code, `precise` kept.
+void ShaderGeneratorTest::productionKernelsSampleInHardware() {
+    int production = 0, verify = 0;
+    for (const GeneratedProgram& p : m_all) {
+        const VariantKey& k = p.key;
+        const std::string c = code(p.fragment.text);
+        const std::string name = k.name();
+        const bool hardware = c.find("#define PX_HAS_HARDWARE_SAMPLING 1") != std::string::npos;
+        QVERIFY2(hardware == (k.flavour == KernelFlavour::Production && k.readsHeightMap()),
+                 name.c_str());
+        QVERIFY2(!hasWord(c, "pxHeightTexel") || !hardware, name.c_str());
+        QVERIFY2(!hasWord(c, "pxConeTexel") || !hardware, name.c_str());
+        const bool cells = k.technique == Technique::Cone ||
+                           k.technique == Technique::RelaxedCone ||
+                           k.technique == Technique::Pyramid || k.technique == Technique::Exact;
+        if (k.flavour == KernelFlavour::Verify) {
+            QVERIFY2(k.readsHeightMap(), name.c_str()); // canonical() folds the others
+            QVERIFY2(hasWord(c, "pxHeightTexel"), name.c_str());
+            QVERIFY2(!hasWord(c, "textureGrad") || k.albedoMap || k.surfaceMap ||
+                         k.normalSource == NormalSource::Map,
+                     name.c_str());
+            QVERIFY2(hasWord(c, "pxFetches"), name.c_str());
+            ++verify;
+            continue;
+        }
+        QVERIFY2(!hasWord(c, "precise"), name.c_str());
+        QVERIFY2(hasWord(c, "pxFetches") == (k.output != ShaderOutput::Color && hardware),
+                 name.c_str());
+        if (hardware && info(k.technique).parallax) {
+            // Cell walks gather corners; marches filter samples.
+            QVERIFY2(hasWord(c, "textureGather") == cells, name.c_str());
+            QVERIFY2(hasWord(c, "pxHeightFiltered") || cells, name.c_str());
+            ++production;
+        }
+    }
+    QVERIFY(production > 1000);
+    QVERIFY(verify > 1000);
+    // Every height-reading variant exists in both flavours.
+    VariantKey k = keyOf(Technique::Cone);
+    k.flavour = KernelFlavour::Verify;
+    QVERIFY(canonical(k).flavour == KernelFlavour::Verify);
+    k.technique = Technique::None;
+    k.normalSource = NormalSource::Map;
+    QVERIFY(canonical(k).flavour == KernelFlavour::Production); // reads no height: one flavour
+}
+
+// The vertex stage reads only which outputs the fragment stage keeps: every program with the
+// same vertex key has the same vertex text, different keys have different texts, and the few
+// distinct stages are what `shader --dump-all` writes once each.
+void ShaderGeneratorTest::vertexStagesAreKeyedByWhatTheyRead() {
+    std::map<VertexKey, std::string> stages;
+    for (const GeneratedProgram& p : m_all) {
+        auto [it, added] = stages.emplace(p.vertexKey, p.vertex.text);
+        QVERIFY2(added || it->second == p.vertex.text,
+                 (p.key.name() + ": vertex stage " + p.vertexKey.name() + " differs").c_str());
+        QVERIFY2(p.vertex.text.find(p.vertexKey.name()) != std::string::npos, p.key.name().c_str());
+        // No feature define of the program reaches the vertex stage.
+        for (const std::string& d : p.vertex.defines)
+            QVERIFY2(d.rfind("PX_FRAGMENT_READS_", 0) == 0, d.c_str());
+    }
+    std::set<std::string> texts;
+    for (const auto& [key, text] : stages)
+        texts.insert(text);
+    QCOMPARE(texts.size(), stages.size());
+    // The trace pass, and four mesh stages: uv only (the surface output of none/normal), position
+    // and normal (colour without a texture), + uv (maps, polygon frame), + tangent and bitangent
+    // (parallax and normals with the vertex frame; derivative frames read no tangents).
+    qInfo("%zu distinct vertex stages for %zu programs", stages.size(), m_all.size());
+    QCOMPARE(stages.size(), std::size_t(5));
+    const std::set<std::string> expected{"trace", "mesh+vUv", "mesh+vNormal+vPosition",
+                                         "mesh+vNormal+vPosition+vUv",
+                                         "mesh+vBitangent+vNormal+vPosition+vTangent+vUv"};
+    std::set<std::string> names;
+    for (const auto& [key, text] : stages)
+        names.insert(key.name());
+    QVERIFY(names == expected);
 }
 
 QTEST_APPLESS_MAIN(ShaderGeneratorTest)

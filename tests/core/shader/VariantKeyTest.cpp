@@ -13,6 +13,7 @@ class VariantKeyTest : public QObject {
 private slots:
     void bitsRoundTrip();
     void outOfRangeBitsAreRejected();
+    void flavourNamesRoundTrip();
     void canonicalIsIdempotentAndValidityPreserving();
     void variantCount();
     void canonicalDropsWhatIsNeverRead();
@@ -39,6 +40,16 @@ void VariantKeyTest::outOfRangeBitsAreRejected() {
     QVERIFY(!VariantKey::fromBits(kVariantKeyCount).has_value());
 }
 
+void VariantKeyTest::flavourNamesRoundTrip() {
+    for (KernelFlavour f : {KernelFlavour::Production, KernelFlavour::Verify})
+        QVERIFY(shader::parseKernelFlavour(shader::kernelFlavourName(f)) == f);
+    QVERIFY(!shader::parseKernelFlavour("fast").has_value());
+    VariantKey k;
+    k.flavour = KernelFlavour::Verify;
+    QCOMPARE(QString::fromStdString(k.name()), QString("pom+central+verify"));
+    QVERIFY(VariantKey::fromBits(k.bits()) == k);
+}
+
 void VariantKeyTest::canonicalIsIdempotentAndValidityPreserving() {
     for (std::uint32_t b = 0; b < kVariantKeyCount; ++b) {
         const std::optional<VariantKey> k = VariantKey::fromBits(b);
@@ -58,8 +69,12 @@ void VariantKeyTest::variantCount() {
     // x 16; 9 parallax techniques x shadow 2 x normal source 4 x 16 x wrap 2, less the 4 (lighting
     // x tbn) of each whose hit nothing reads. Surface: 9 x wrap 2 x tbn 2 + 2 x tbn 2. Trace:
     // 9 x wrap 2 + 2.
-    const std::size_t expected =
+    const std::size_t production =
         16 + 5 * 16 + 9 * (2 * 4 * 16 * 2 - 4) + (9 * 2 * 2 + 2 * 2) + (9 * 2 + 2);
+    // Verify kernels for every variant that reads the height map: all but colour none (16),
+    // normal from a normal map (16), and none/normal in the surface (2 x tbn 2) and trace outputs.
+    const std::size_t verify = production - (16 + 16 + 4 + 2);
+    const std::size_t expected = production + verify;
     const std::vector<VariantKey> all = allVariants();
     QCOMPARE(all.size(), expected);
     for (const VariantKey& k : all) {

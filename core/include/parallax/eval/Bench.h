@@ -39,11 +39,16 @@ struct GpuFrameRequest {
     double azimuthDeg = 0.0;
     int width = 1920;
     int height = 1080;
+    // The bench's own scene (R x R rays at this angle): the timer also traces it, untimed, and
+    // returns the GPU's hits, so the error of what the GPU kernels draw is measured too.
+    int rays = 0;
 };
 
 struct GpuFrameTiming {
-    double msPerFrame = 0.0; // steady clock around the frame and glFinish, or a timer query
-    std::string renderer;    // GL_RENDERER, marked as software where it is (llvmpipe)
+    double msPerFrame = 0.0;       // steady clock around the frame and glFinish, or a timer query
+    std::string renderer;          // GL_RENDERER, marked as software where it is (llvmpipe)
+    std::string kernels;           // the kernel flavour timed ("production", "verify")
+    std::vector<TraceResult> hits; // the bench scene's rays, in its order (empty: not traced)
 };
 
 // Supplied by the application (the core has no GL); an error leaves the GPU column empty with
@@ -79,6 +84,8 @@ struct BenchRow {
     std::optional<double> cpuNsPerRay;   // one thread
     std::optional<double> gpuMsPerFrame; // mean over the pooled conditions for a pooled row
     std::string gpuRenderer;             // the renderer that timed it, or why the timing is missing
+    std::string gpuKernels;              // the GPU kernels' flavour (empty without GPU hits)
+    std::optional<HitErrorStats> gpuStats; // the GPU kernels' hits against the CPU's exact ones
     bool pooled = false;
 };
 

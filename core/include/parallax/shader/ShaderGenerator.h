@@ -44,8 +44,21 @@ struct GeneratedShader {
     std::vector<std::string> defines;    // the PX_ defines that are on
 };
 
+// What the vertex stage depends on: the trace pass or a mesh, and which of its outputs the
+// fragment stage reads (sorted names, "vNormal", "vUv", ...). Programs with equal vertex keys have
+// byte-identical vertex shaders.
+struct VertexKey {
+    bool trace = false;
+    std::vector<std::string> outputs;
+    // "mesh+vNormal+vPosition+vUv", "trace": the vertex shader's name.
+    std::string name() const;
+    friend bool operator==(const VertexKey&, const VertexKey&) = default;
+    friend auto operator<=>(const VertexKey&, const VertexKey&) = default;
+};
+
 struct GeneratedProgram {
     VariantKey key;
+    VertexKey vertexKey;
     GeneratedShader vertex;
     GeneratedShader fragment;
 };

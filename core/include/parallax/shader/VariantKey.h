@@ -27,6 +27,13 @@ enum class ShaderOutput {
     Trace,   // the canonical trace scene (docs/conventions.md §5): pixel (i, j) is ray (i, j)
 };
 
+// How the kernels read the height and cone maps. Production: as an engine would, through the
+// texture units (hardware bilinear filtering and mip selection, textureGather for a cell's
+// corners), no fetch counter where nothing reads it, no `precise`. Verify: texelFetch and the
+// filtering written out in the shared code, so the GPU matches the CPU to the bit (the tests that
+// hold GPU == CPU).
+enum class KernelFlavour { Production, Verify };
+
 struct VariantKey {
     Technique technique = Technique::Pom;
     bool shadow = false;
@@ -37,9 +44,10 @@ struct VariantKey {
     LightingModel lighting = LightingModel::BlinnPhong;
     TbnSource tbn = TbnSource::VertexTangents;
     ShaderOutput output = ShaderOutput::Color;
+    KernelFlavour flavour = KernelFlavour::Production;
 
-    // The key as 14 bits (technique 0-3, shadow 4, normal source 5-6, albedo 7, surface 8,
-    // wrap 9, lighting 10, tbn 11, output 12-13): a cache index and a stable name.
+    // The key as 15 bits (technique 0-3, shadow 4, normal source 5-6, albedo 7, surface 8,
+    // wrap 9, lighting 10, tbn 11, output 12-13, flavour 14): a cache index and a stable name.
     std::uint32_t bits() const;
     static std::optional<VariantKey> fromBits(std::uint32_t bits);
 
@@ -51,20 +59,22 @@ struct VariantKey {
     // Which maps and uniforms the variant reads (after canonical()).
     bool readsHeightMap() const;
 
-    // "pom+shadow+central+albedo+clamp" style, for file names, logs and `shader --list`.
+    // "pom+shadow+central+albedo+clamp" style, for file names, logs and `shader --list`; the
+    // verify flavour ends in "+verify".
     std::string name() const;
 
     friend bool operator==(const VariantKey&, const VariantKey&) = default;
 };
 
-inline constexpr int kVariantKeyBits = 14;
+inline constexpr int kVariantKeyBits = 15;
 inline constexpr std::uint32_t kVariantKeyCount = 1u << kVariantKeyBits;
 
 // Clears every bit the key's technique and output never read: shadow only on parallax techniques,
 // no normals and no material maps in the trace or surface outputs, wrap only where the height map
 // is read, roughness/metallic only with the metallic-roughness model (Blinn-Phong reads only the
 // occlusion channel of the surface map). A parallax technique whose hit nothing reads (no map, no
-// shadow, no clamp discard) draws exactly as `none` and becomes `none`. Idempotent.
+// shadow, no clamp discard) draws exactly as `none` and becomes `none`. A variant that reads no
+// height map has one flavour, production. Idempotent.
 VariantKey canonical(VariantKey key);
 
 // Every valid canonical key, in bits() order: what `parallax-cli shader --dump-all` writes and
@@ -73,5 +83,11 @@ std::vector<VariantKey> allVariants();
 
 // The key a material asks for with the maps it actually has (paths non-empty).
 VariantKey variantFor(const Material& material, ShaderOutput output = ShaderOutput::Color);
+
+// The kernel flavours' names: "production", "verify" (`--kernels`, variant names).
+namespace shader {
+std::optional<KernelFlavour> parseKernelFlavour(std::string_view name);
+std::string_view kernelFlavourName(KernelFlavour flavour);
+} // namespace shader
 
 } // namespace px

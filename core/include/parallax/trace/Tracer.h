@@ -45,6 +45,11 @@ public:
     // P = s * d.xy / (-d.z) (docs/conventions.md §2); it must be finite.
     TraceResult trace(glm::dvec2 uv0, glm::vec2 P) const;
 
+    // From now on, trace with the production kernels (the GPU's default flavour) on a model of a
+    // GPU texture unit whose bilinear weights keep `subTexelBits` fractional bits (8 on most GPUs):
+    // what hardware filtering costs, measured on the CPU. 0 (the default): the exact kernels.
+    void modelTextureUnit(int subTexelBits) { m_subTexelBits = subTexelBits; }
+
     Technique technique() const { return m_technique; }
     const TraceParams& params() const { return m_params; }
     float heightScale() const { return m_scale; }
@@ -52,11 +57,13 @@ public:
 
 private:
     Tracer() = default;
+    template <typename Kernel> TraceResult traceWith(Kernel& k, glm::dvec2 uv0, glm::vec2 P) const;
     TraceMaps m_maps;
     Technique m_technique = Technique::Exact;
     TraceParams m_params;
     float m_scale = 0.0f;
     float m_heightMax = 1.0f;
+    int m_subTexelBits = 0;
     std::shared_ptr<const ConeMap> m_ownedCone;
     std::shared_ptr<const MaxMipPyramid> m_ownedPyramid;
 };
