@@ -37,6 +37,7 @@ int run(int argc, char** argv) {
     add(addBenchCommand);
     add(addStabilityCommand);
     add(addBakeCommand);
+    add(addRecommendCommand);
 
     try {
         app.parse(argc, argv);
