@@ -244,7 +244,7 @@ int runRecommend(const RecommendOptions& o) {
     else if (Status s = writeTextFile(o.out, report); !s)
         return fail(s.error().message);
     if (!r->found)
-        return fail(describe(*r, config) + " (allow more techniques, or a larger budget)");
+        return fail("nothing meets the budget: allow more techniques, or a larger budget");
     return 0;
 }
 
