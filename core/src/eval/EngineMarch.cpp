@@ -147,8 +147,8 @@ Result<EngineLayersAdvice> recommendGodotLayers(const RecommendConfig& config,
     advice.found = true;
     advice.layers = rung(kLayerRungs[hi]);
     advice.angles = chosen;
-    advice.note = "Godot layers " + layersText(advice.layers) + " from the model of its deep " +
-                  "parallax: the fewest that meet " + budget;
+    advice.note = "Godot deep parallax with " + layersText(advice.layers) +
+                  " (its own march, modelled): the fewest that meet " + budget;
     return advice;
 }
 

@@ -15,4 +15,5 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/Recommendation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RecommendationText.cpp
   ${CMAKE_CURRENT_LIST_DIR}/EngineMarch.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/AutoTechnique.cpp
 )

@@ -142,7 +142,7 @@ void EngineMarchTest::adviceMeetsTheBudgetOnFreshRays() {
     Result<EngineLayersAdvice> advice = recommendGodotLayers(config);
     QVERIFY(advice.ok() && advice->found);
     QVERIFY(advice->layers.maxLayers >= 4 && advice->layers.minLayers >= 1);
-    QVERIFY(QString::fromStdString(advice->note).startsWith("Godot layers"));
+    QVERIFY(QString::fromStdString(advice->note).startsWith("Godot deep parallax with "));
 
     // Fresh rays of the test's own drawing against the exact hit of Godot's own ray.
     const HeightField& field = *config.field;
