@@ -9,28 +9,19 @@
 //   parallax-bench-recommend
 //   parallax-bench-recommend --benchmark_filter=Warm
 
+#include "ProcessCpu.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/eval/Recommendation.h"
 #include "parallax/sample/ProceduralMaps.h"
 
 #include <benchmark/benchmark.h>
 #include <chrono>
-#include <sys/resource.h>
 
 using namespace px;
 
 namespace {
 
 constexpr double kTargetSeconds = 2.0;
-
-double processCpuSeconds() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    auto seconds = [](const timeval& t) {
-        return static_cast<double>(t.tv_sec) + t.tv_usec * 1e-6;
-    };
-    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-}
 
 struct Prepared {
     std::shared_ptr<const HeightField> field;
@@ -74,11 +65,11 @@ void run(benchmark::State& state, Mode mode) {
             config.budget.texels = 0.5;
         }
         state.ResumeTiming();
-        const double cpuBefore = processCpuSeconds();
+        const double cpuBefore = bench::processCpuSeconds();
         const auto start = std::chrono::steady_clock::now();
         Result<Recommendation> r = recommend(config);
         wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        cpu += processCpuSeconds() - cpuBefore;
+        cpu += bench::processCpuSeconds() - cpuBefore;
         if (!r) {
             state.SkipWithError(r.error().message.c_str());
             return;

@@ -4,8 +4,12 @@
 #                [TIMEOUT <seconds>] [GL])
 # GL tests need a context (Xvfb or EGL); the others run on Qt's offscreen platform.
 #
-#   px_add_cli_test(NAME <name> COMMAND <args...> [EXPECT <regex>] [FAIL] [LABELS <labels...>])
-# Runs parallax-cli with the arguments; EXPECT matches its output, FAIL expects a non-zero exit.
+#   px_add_cli_test(NAME <name> COMMAND <args...> [RC <status>] [EXPECT <regex...>]
+#                   [REJECT <regex>] [CREATES <files...>] [UNCHANGED <file=twin...>]
+#                   [LABELS <labels...>] [ENV <VAR=value...>] [TIMEOUT <seconds>])
+# Runs parallax-cli with the arguments and checks its exit status (RC, default 0) and its output
+# (every EXPECT regex, stdout and stderr together): a failing command needs both, a succeeding one
+# EXPECT or CREATES (see PxRunCli.cmake).
 
 cmake_path(SET _px_default_shared NORMALIZE "${PROJECT_SOURCE_DIR}/../shared")
 set(PX_SHARED_DIR "${_px_default_shared}" CACHE PATH
@@ -38,20 +42,35 @@ function(px_add_qtest)
                        ENVIRONMENT "${_env}")
 endfunction()
 
+set(PX_RUN_CLI ${CMAKE_CURRENT_LIST_DIR}/PxRunCli.cmake)
+
 function(px_add_cli_test)
-  cmake_parse_arguments(T "FAIL" "NAME;EXPECT;TIMEOUT" "COMMAND;LABELS" ${ARGN})
+  cmake_parse_arguments(T "FAIL" "NAME;RC;TIMEOUT"
+                        "COMMAND;EXPECT;REJECT;CREATES;UNCHANGED;LABELS;ENV" ${ARGN})
+  if(T_FAIL)
+    message(FATAL_ERROR "cli.${T_NAME}: FAIL checks no status or message: give RC and EXPECT")
+  endif()
+  if(NOT DEFINED T_RC)
+    set(T_RC 0)
+  endif()
+  if(NOT T_RC EQUAL 0 AND NOT T_EXPECT)
+    message(FATAL_ERROR "cli.${T_NAME}: a failing command must be checked for its message (EXPECT)")
+  endif()
+  if(T_RC EQUAL 0 AND NOT T_EXPECT AND NOT T_CREATES)
+    message(FATAL_ERROR "cli.${T_NAME}: check the output (EXPECT) or the files written (CREATES)")
+  endif()
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 120)
   endif()
   math(EXPR T_TIMEOUT "${T_TIMEOUT} * ${PX_TIMEOUT_SCALE}")
-  add_test(NAME cli.${T_NAME} COMMAND $<TARGET_FILE:parallax-cli> ${T_COMMAND}
+  add_test(NAME cli.${T_NAME}
+           COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:parallax-cli>;${T_COMMAND}"
+                   -DEXPECT_RC=${T_RC} "-DEXPECT=${T_EXPECT}" "-DREJECT=${T_REJECT}"
+                   "-DCREATES=${T_CREATES}" "-DUNCHANGED=${T_UNCHANGED}" -P ${PX_RUN_CLI}
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   set(_labels cli ${T_LABELS})
   set_tests_properties(cli.${T_NAME} PROPERTIES LABELS "${_labels}" TIMEOUT ${T_TIMEOUT})
-  if(T_EXPECT)
-    set_tests_properties(cli.${T_NAME} PROPERTIES PASS_REGULAR_EXPRESSION "${T_EXPECT}")
-  endif()
-  if(T_FAIL)
-    set_tests_properties(cli.${T_NAME} PROPERTIES WILL_FAIL TRUE)
+  if(T_ENV)
+    set_tests_properties(cli.${T_NAME} PROPERTIES ENVIRONMENT "${T_ENV}")
   endif()
 endfunction()

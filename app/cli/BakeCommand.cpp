@@ -1,8 +1,9 @@
 // parallax-cli bake normal|cone|relaxed-cone|pyramid: the bakers of core/bake as files.
 //
 // Every bake is checked before it starts (options, output type, output folder), shows progress
-// on stderr once it has run for a second, stops cleanly on Ctrl-C, and writes atomically: a
-// failed or interrupted bake leaves any previous output untouched and no partial file.
+// on stderr once it has run for a second, stops at once on Ctrl-C (Interrupt.h), and writes
+// atomically: a failed or interrupted bake leaves any previous output untouched and no partial
+// file.
 
 #include "Cli.h"
 #include "CommonOptions.h"
@@ -14,7 +15,6 @@
 #include "parallax/material/MaterialNames.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -42,30 +42,9 @@ struct BakeOptions {
     std::string out;
 };
 
-// Ctrl-C sets the flag the bakers poll; a lock-free atomic store is async-signal-safe.
-std::atomic<bool> gInterrupted{false};
-static_assert(std::atomic<bool>::is_always_lock_free);
-extern "C" void onInterrupt(int) {
-    gInterrupted.store(true);
-}
-
-class InterruptGuard {
-public:
-    InterruptGuard() {
-        gInterrupted = false;
-        m_previous = std::signal(SIGINT, onInterrupt);
-    }
-    ~InterruptGuard() { std::signal(SIGINT, m_previous); }
-    InterruptGuard(const InterruptGuard&) = delete;
-    InterruptGuard& operator=(const InterruptGuard&) = delete;
-
-private:
-    void (*m_previous)(int) = SIG_DFL;
-};
-
 // "baking relaxed-cone map: 42%" on stderr, once the bake has run for a second: one updating
 // line on a terminal, a line per 10% otherwise. PX_BAKE_TEST_INTERRUPT_AT=F (tests only) raises
-// SIGINT once the bake is F done, to exercise the real Ctrl-C path.
+// SIGINT once the bake is F done, to exercise the real Ctrl-C path (Interrupt.h).
 class ProgressLine {
 public:
     explicit ProgressLine(std::string what)
@@ -231,23 +210,17 @@ int runBake(const BakeOptions& o, const CLI::App& cmd) {
     if (!format)
         return fail(format.error().message);
 
-    InterruptGuard guard;
     Result<Image> image = Error{""};
     {
         ProgressLine line("baking " + o.kind + (o.kind == "pyramid" ? "" : " map"));
         BakeControl control;
         control.progress = [&line](float done) { line(done); };
-        control.cancel = &gInterrupted;
         if (o.kind == "normal")
             image = bakeNormal(o, control);
         else if (o.kind == "pyramid")
             image = bakePyramid(o, *format);
         else
             image = bakeCones(o, *format, control);
-    }
-    if ((!image && isCancelled(image.error())) || gInterrupted) {
-        fail("interrupted: nothing was written");
-        return 130; // as shells report SIGINT
     }
     if (!image)
         return fail(image.error().message);

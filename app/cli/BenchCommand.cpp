@@ -10,10 +10,13 @@
 #include "parallax/heightfield/HeightFieldLoader.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/sample/ProceduralMaps.h"
+#include "parallax/trace/ParallaxBound.h"
+#include "parallax/trace/TraceScene.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -35,7 +38,7 @@ struct BenchOptions {
     std::string techniques = "all";
     std::vector<std::string> sweeps;
     bool defaultsOnly = false;
-    std::vector<double> polar{30.0, 60.0, 80.0, 87.0};
+    std::vector<double> polar = kBenchPolarDeg;
     double azimuth = 35.0;
     std::vector<float> scales{0.05f, 0.1f};
     int rays = 128;
@@ -195,6 +198,9 @@ int runBenchCommand(const BenchOptions& o) {
         return replot(o);
     if (o.out.empty())
         return fail("give --out FILE.csv (or - for standard output)");
+    // Every output is checked before measuring (the folders in Cli.cpp), not after minutes.
+    if (!o.plot.empty() && std::filesystem::path(o.plot).extension() != ".svg")
+        return fail(o.plot + ": the plot is written as SVG: name it .svg");
     Result<std::vector<Technique>> techniques = parseTechniqueList(o.techniques);
     if (!techniques)
         return fail(techniques.error().message);
@@ -247,6 +253,15 @@ int runBenchCommand(const BenchOptions& o) {
     }
     if (Status s = validate(config); !s)
         return fail(s.error().message);
+    for (double polar : config.polarDeg) {
+        for (float scale : config.scales) {
+            const BoundedParallax b =
+                boundParallax(parallaxVector(scale, polar, config.azimuthDeg));
+            if (!b.note.empty())
+                std::cerr << "note: polar " << polar << ", scale " << scale << ": " << b.note
+                          << "\n";
+        }
+    }
 
     // Progress on one rewritten line, only where someone watches it.
     const bool showProgress = !o.quiet && isatty(STDERR_FILENO);
@@ -285,7 +300,11 @@ int runBenchCommand(const BenchOptions& o) {
             out << "GPU: " << report->gpuNote << "\n";
         printSummary(out, *report);
     }
-    return 0;
+    // A technique documented exact that is not, on some ray, fails the run (the report is kept).
+    const std::vector<std::string> failures = exactnessFailures(*report);
+    for (const std::string& f : failures)
+        std::cerr << "error: not exact: " << f << "\n";
+    return failures.empty() ? 0 : 1;
 }
 
 } // namespace

@@ -1,11 +1,43 @@
 #include "Cli.h"
 
+#include "Interrupt.h"
 #include "parallax/Version.h"
+#include "parallax/io/OutputCheck.h"
 
+#include <filesystem>
 #include <iostream>
+#include <new>
 #include <vector>
 
 namespace px::cli {
+
+namespace {
+
+// The options that name files a command writes; every other option whose value is an existing
+// file is an input. (export's --out and shader's --dump-all are folders, checked by their own.)
+bool namesOutputFile(const CLI::App& command, const std::string& option) {
+    if (command.get_name() == "export")
+        return false;
+    return option == "--out" || option == "--plot" || option == "--csv";
+}
+
+// Refuses, before any work, an output that would overwrite an input or cannot be written.
+Status checkFileOptions(const CLI::App& command) {
+    std::vector<NamedPath> outputs, inputs;
+    for (const CLI::Option* option : command.get_options()) {
+        const std::string name = option->get_name();
+        for (const std::string& value : option->results()) {
+            std::error_code ec;
+            if (namesOutputFile(command, name) && value != "-")
+                outputs.push_back({name, value});
+            else if (!value.empty() && std::filesystem::is_regular_file(value, ec))
+                inputs.push_back({name, value});
+        }
+    }
+    return checkOutputs(outputs, inputs);
+}
+
+} // namespace
 
 int fail(const std::string& message) {
     std::cerr << "error: " << message << "\n";
@@ -23,6 +55,7 @@ int run(int argc, char** argv) {
         CLI::App* command;
         Action action;
     };
+    installInterruptHandlers();
     std::vector<Entry> entries;
     auto add = [&](Action (*registrar)(CLI::App&)) {
         const std::size_t before = app.get_subcommands({}).size();
@@ -38,6 +71,7 @@ int run(int argc, char** argv) {
     add(addStabilityCommand);
     add(addBakeCommand);
     add(addRecommendCommand);
+    add(addImportCommand);
 
     try {
         app.parse(argc, argv);
@@ -49,8 +83,16 @@ int run(int argc, char** argv) {
         return 2;
     }
     for (const Entry& entry : entries) {
-        if (entry.command->parsed())
+        if (!entry.command->parsed())
+            continue;
+        if (Status s = checkFileOptions(*entry.command); !s)
+            return fail(s.error().message);
+        try {
             return entry.action();
+        } catch (const std::bad_alloc&) {
+            return fail("out of memory: the input is larger than this machine can hold (no "
+                        "output was written)");
+        }
     }
     return 2;
 }

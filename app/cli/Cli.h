@@ -20,6 +20,7 @@ Action addBenchCommand(CLI::App& app);
 Action addStabilityCommand(CLI::App& app);
 Action addBakeCommand(CLI::App& app);
 Action addRecommendCommand(CLI::App& app);
+Action addImportCommand(CLI::App& app);
 
 // Prints "error: <message>" to stderr and returns the failure status.
 int fail(const std::string& message);

@@ -1,8 +1,14 @@
 #include "CommonOptions.h"
 
+#include "parallax/material/MaterialNames.h"
+
 #include <functional>
 
 namespace px::cli {
+
+std::vector<std::string> choices(std::span<const std::string_view> names) {
+    return {names.begin(), names.end()};
+}
 
 void HeightOptions::addTo(CLI::App& command, bool required) {
     auto* height =
@@ -13,7 +19,7 @@ void HeightOptions::addTo(CLI::App& command, bool required) {
     command.add_flag("--normalize", normalize, "Remap the map's [min, max] to [0, 1]");
     command.add_flag("--allow-large", allowLarge, "Accept maps with a side over 16384 texels");
     command.add_option("--channel", channel, "Channel holding the height")
-        ->check(CLI::IsMember({"red", "green", "blue", "alpha", "luminance"}));
+        ->check(CLI::IsMember(choices(heightChannelNames())));
     command.add_option("--wrap", wrap, "Wrap mode of the material")
         ->check(CLI::IsMember({"repeat", "clamp"}));
 }

@@ -10,9 +10,15 @@
 
 #include <CLI/CLI.hpp>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace px::cli {
+
+// The names of a core table as CLI11's IsMember wants them, so no command lists them by hand.
+std::vector<std::string> choices(std::span<const std::string_view> names);
 
 struct HeightOptions {
     std::string file;

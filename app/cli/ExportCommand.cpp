@@ -98,6 +98,13 @@ void printResult(const ExportResult& result, const std::string& format) {
     std::cout << "\n";
     for (const std::string& note : result.notes)
         std::cout << "note: " << note << "\n";
+    if (!result.kept.empty()) {
+        std::cout << "kept " << result.kept.size() << " file"
+                  << (result.kept.size() == 1 ? "" : "s") << " that no export wrote:";
+        for (const std::string& file : result.kept)
+            std::cout << " " << file;
+        std::cout << "\n";
+    }
 }
 
 int runSingle(const ExportCliOptions& o) {

@@ -7,6 +7,7 @@
 #include "Renderer.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/material/MaterialFile.h"
+#include "parallax/material/MaterialNames.h"
 #include "parallax/shader/VariantKey.h"
 #include "parallax/trace/Tracer.h"
 
@@ -117,12 +118,12 @@ Result<Material> materialFrom(const RenderOptions& o, MaterialAssets& assets) {
     if (o.scale)
         m.heightScale = *o.scale;
     if (o.normalSource)
-        m.normalSource = *shader::parseNormalSource(*o.normalSource);
+        m.normalSource = *parseNormalSourceShortName(*o.normalSource);
     else if (o.material.empty() && !o.normal.empty())
         m.normalSource = NormalSource::Map;
     m.normalGreen = o.normalGreen == "directx" ? NormalGreen::DirectX : NormalGreen::OpenGL;
     if (o.lighting)
-        m.lighting = *shader::parseLightingModel(*o.lighting);
+        m.lighting = *parseLightingModel(*o.lighting);
     if (o.shadow)
         m.selfShadow = true;
     if (o.softness)
@@ -271,9 +272,9 @@ Action addRenderCommand(CLI::App& app) {
     o->quality.addTo(*cmd);
     cmd->add_option("--normal-source", o->normalSource,
                     "Shading normals: none, map, central, sobel")
-        ->check(CLI::IsMember({"none", "map", "central", "sobel"}));
+        ->check(CLI::IsMember(choices(normalSourceShortNames())));
     cmd->add_option("--lighting", o->lighting, "blinn-phong or metallic-roughness")
-        ->check(CLI::IsMember({"blinn-phong", "metallic-roughness"}));
+        ->check(CLI::IsMember(choices(lightingModelNames())));
     cmd->add_flag("--shadow", o->shadow, "Soft self-shadowing towards the light");
     cmd->add_option("--softness", o->softness, "Shadow softness, 0 (hard) to 1")
         ->check(CLI::Range(0.0f, 1.0f));

@@ -1,8 +1,10 @@
 // parallax-cli shader: the specialised shader of a material or a feature set, or every variant.
 
 #include "Cli.h"
+#include "CommonOptions.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
+#include "parallax/material/MaterialNames.h"
 #include "parallax/shader/ShaderGenerator.h"
 
 #include <filesystem>
@@ -46,11 +48,11 @@ Result<VariantKey> keyFrom(const ShaderOptions& o) {
     k.shadow = o.shadow;
     k.normalSource = o.normalMap ? NormalSource::Map : NormalSource::HeightCentral;
     if (!o.normalSource.empty())
-        k.normalSource = *shader::parseNormalSource(o.normalSource);
+        k.normalSource = *parseNormalSourceShortName(o.normalSource);
     k.albedoMap = o.albedo;
     k.surfaceMap = o.orm;
     k.wrap = *parseWrapMode(o.wrap);
-    k.lighting = *shader::parseLightingModel(o.lighting);
+    k.lighting = *parseLightingModel(o.lighting);
     k.tbn = o.derivativeTbn ? TbnSource::Derivatives : TbnSource::VertexTangents;
     k.output = output;
     if (Status s = k.validate(); !s)
@@ -123,12 +125,12 @@ Action addShaderCommand(CLI::App& app) {
         cmd->add_flag("--normal-map", o->normalMap, "Shading normals from a normal map"),
         cmd->add_option("--normal-source", o->normalSource,
                         "Shading normals: none, map, central (4 taps of height), sobel (8 taps)")
-            ->check(CLI::IsMember({"none", "map", "central", "sobel"})),
+            ->check(CLI::IsMember(choices(normalSourceShortNames()))),
         cmd->add_flag("--albedo", o->albedo, "An albedo map"),
         cmd->add_flag("--orm", o->orm, "An occlusion/roughness/metallic map"),
         cmd->add_option("--wrap", o->wrap, "Wrap mode")->check(CLI::IsMember({"repeat", "clamp"})),
         cmd->add_option("--lighting", o->lighting, "Lighting model")
-            ->check(CLI::IsMember({"blinn-phong", "metallic-roughness"})),
+            ->check(CLI::IsMember(choices(lightingModelNames()))),
         cmd->add_flag("--derivative-tbn", o->derivativeTbn,
                       "Tangent frame from screen-space derivatives (meshes without tangents)"),
     };

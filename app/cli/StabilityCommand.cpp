@@ -17,6 +17,7 @@ namespace {
 struct StabilityOptionsCli {
     std::vector<std::string> cases;
     int rays = 32;
+    unsigned seed = 1;
     bool list = false;
     std::string csv;
 };
@@ -36,13 +37,15 @@ const char* resultWord(const StabilityRow& r) {
 }
 
 std::string stabilityCsv(const std::vector<StabilityRow>& rows) {
-    std::string csv = "case,technique,result,figure,failure,p99_error,max_error,invalid,"
-                      "max_fetches,fetch_cap\n";
-    char numbers[160];
+    std::string csv = "case,technique,result,figure,failure,p99_error,max_error,wrong_surface,"
+                      "invalid,mean_fetches,p99_fetches,max_fetches,fetch_cap\n";
+    char numbers[200];
     for (const StabilityRow& r : rows) {
-        std::snprintf(numbers, sizeof numbers, "%.9g,%.9g,%lld,%d,%lld", r.stats.p99Error,
-                      r.stats.maxError, static_cast<long long>(r.stats.invalid), r.stats.maxFetches,
-                      static_cast<long long>(r.fetchCap));
+        std::snprintf(numbers, sizeof numbers, "%.9g,%.9g,%lld,%lld,%.9g,%.9g,%d,%lld",
+                      r.stats.p99Error, r.stats.maxError,
+                      static_cast<long long>(r.stats.wrongSurface),
+                      static_cast<long long>(r.stats.invalid), r.stats.meanFetches,
+                      r.stats.p99Fetches, r.stats.maxFetches, static_cast<long long>(r.fetchCap));
         csv += csvField(r.caseName) + "," + r.technique + "," + resultWord(r) + "," +
                csvField(r.figure) + "," + csvField(r.failure) + "," + numbers + "\n";
     }
@@ -52,7 +55,7 @@ std::string stabilityCsv(const std::vector<StabilityRow>& rows) {
 void printList() {
     std::printf("Cases:\n");
     for (const StabilityCaseInfo& c : stabilityCases())
-        std::printf("  %-24s %s\n", c.name.data(), std::string(c.description).c_str());
+        std::printf("  %-30s %s\n", c.name.data(), std::string(c.description).c_str());
     std::printf("\nError bounds (every row also needs finite hits, t in [0, 1] and fetches within "
                 "the cap):\n");
     for (const BoundRule& r : boundRules())
@@ -67,17 +70,18 @@ int runStability(const StabilityOptionsCli& o) {
     StabilityOptions options;
     options.cases = o.cases;
     options.rays = o.rays;
+    options.seed = o.seed;
     Result<std::vector<StabilityRow>> rows = runStabilitySuite(options);
     if (!rows)
         return fail(rows.error().message);
 
     int failed = 0;
-    std::printf("%-24s %-13s %-6s %s\n", "case", "technique", "result", "figure checked");
+    std::printf("%-30s %-13s %-6s %s\n", "case", "technique", "result", "figure checked");
     for (const StabilityRow& r : *rows) {
         std::string note;
         if (!r.passed)
             note = "  <- " + r.failure;
-        std::printf("%-24s %-13s %-6s %s%s\n", r.caseName.c_str(), r.technique.c_str(),
+        std::printf("%-30s %-13s %-6s %s%s\n", r.caseName.c_str(), r.technique.c_str(),
                     resultWord(r), r.figure.c_str(), note.c_str());
         failed += r.passed ? 0 : 1;
     }
@@ -104,6 +108,8 @@ Action addStabilityCommand(CLI::App& app) {
         ->check(CLI::IsMember(names));
     cmd->add_option("--rays", o->rays, "Rays per side (R) of each case")
         ->check(CLI::Range(1, 1024));
+    cmd->add_option("--seed", o->seed,
+                    "Seed of the maps with random texels (the adversarial ones)");
     cmd->add_flag("--list", o->list,
                   "List the cases and each technique's error bound, run nothing");
     cmd->add_option("--csv", o->csv, "Also write the rows as CSV");

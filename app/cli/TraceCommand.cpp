@@ -4,6 +4,7 @@
 #include "CommonOptions.h"
 #include "GpuTracer.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/trace/ParallaxBound.h"
 #include "parallax/trace/TraceScene.h"
 
 #include <iostream>
@@ -44,6 +45,9 @@ int runTrace(const TraceOptions& o) {
     scene.azimuthDeg = o.azimuth;
     if (Status s = validate(scene); !s)
         return fail(s.error().message);
+    if (const BoundedParallax b = boundParallax(parallaxVector(o.scale, o.polar, o.azimuth));
+        !b.note.empty())
+        std::cerr << "note: " << b.note << "\n";
 
     Result<HeightField> field = o.height.load();
     if (!field)

@@ -7,6 +7,7 @@
 #include "WorkPrecisionPlot.h"
 
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/Temporaries.h"
 
 #include <algorithm>
 #include <array>
@@ -117,6 +118,21 @@ void drawPanel(const WorkPrecisionChart& chart, const WorkPrecisionPanel& panel)
         plwidth(1.0);
         plstring(static_cast<PLINT>(x.size()), x.data(), y.data(),
                  techniqueSymbol(series.technique));
+        // The tail p99 hides: a dotted whisker up to the worst ray, and how many rays found
+        // another surface.
+        pllsty(3);
+        for (const WorkPrecisionPoint& p : series.points) {
+            if (p.plotMaxError <= p.plotError)
+                continue;
+            const PLFLT wx[2] = {std::log10(p.cost), std::log10(p.cost)};
+            const PLFLT wy[2] = {std::log10(p.plotError), std::log10(p.plotMaxError)};
+            plline(2, wx, wy);
+            if (p.wrongSurface > 0) {
+                const std::string label = " " + std::to_string(p.wrongSurface) + " wrong";
+                plptex(wx[1], wy[1], 1.0, 0.0, 0.0, label.c_str());
+            }
+        }
+        pllsty(1);
         for (const WorkPrecisionPoint& p : series.points) {
             if (!p.setting.isDefault)
                 continue;
@@ -131,7 +147,8 @@ void drawPanel(const WorkPrecisionChart& chart, const WorkPrecisionPanel& panel)
     plbox("bcnstl", 0.0, 0, "bcnstlv", 0.0, 0);
     char title[96];
     std::snprintf(title, sizeof title, "polar %s", formatDegrees(panel.polarDeg).c_str());
-    pllab(std::string(costAxisTitle(panel.axis)).c_str(), "p99 hit error (texels)", title);
+    pllab(std::string(costAxisTitle(panel.axis)).c_str(),
+          "p99 hit error (texels); dotted: up to max", title);
 }
 
 // One legend for every panel, in the header band: every technique present, then the marks.
@@ -206,6 +223,7 @@ Status writeWorkPrecisionPlot(const std::string& path, const WorkPrecisionChart&
     if (std::filesystem::path(path).extension() != ".svg")
         return fileError(path, "the plot is written as SVG: name it .svg");
     const std::filesystem::path temp = temporaryPathFor(path);
+    const TemporaryGuard guard(temp);
     // PLplot ends the process when it cannot open its file: make sure it can first.
     if (!std::ofstream(temp))
         return fileError(path, "cannot create the file (missing folder or no permission)");
@@ -243,12 +261,16 @@ Status writeWorkPrecisionPlot(const std::string& path, const WorkPrecisionChart&
     }
     plend();
 
+    // PLplot does not report a full disk: a complete SVG ends with its closing tag. The checked
+    // writer then writes it for good (every step checked, as every other output).
+    Result<std::string> svg = readTextFile(temp.string());
     std::error_code ec;
-    if (!std::filesystem::exists(temp, ec) || std::filesystem::file_size(temp, ec) == 0) {
-        std::filesystem::remove(temp, ec);
-        return fileError(path, "cannot write the plot there");
-    }
-    return commitTemporary(temp, path);
+    std::filesystem::remove(temp, ec);
+    const std::string end = "</svg>";
+    if (!svg || svg->find(end, svg->size() > 64 ? svg->size() - 64 : 0) == std::string::npos)
+        return fileError(path, "writing the plot failed (the disk may be full); the previous file, "
+                               "if any, is unchanged");
+    return writeFileAtomically(path, *svg);
 }
 
 } // namespace px::cli

@@ -6,7 +6,8 @@
 // share one OrbitCamera and DirectionalLight and each passes its own Material copy (technique,
 // quality, shadow, normal source, lighting: the per-view settings) to draw() in paintGL(). Every
 // parameter is a uniform, set on each draw: moving a slider never recompiles; only a new feature
-// set compiles a new variant, once (ShaderCache). readImage() reads the frame back.
+// set compiles a new variant, once (ShaderCache). renderImage() draws offscreen and reads the
+// frame back.
 
 #include "Camera.h"
 #include "GlInfo.h"

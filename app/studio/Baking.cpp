@@ -1,5 +1,8 @@
 #include "Baking.h"
 
+#include <QObject>
+#include <QStringList>
+
 namespace px::studio {
 
 MapKind mapKindOf(BakeKind kind) {
@@ -51,6 +54,7 @@ Result<DocumentState> withBake(const DocumentState& state, const BakeOutcome& ou
         assets->normal = outcome.normal;
         next.material.normalSource = NormalSource::Map;
         next.material.normalGreen = request.normal.green;
+        next.normalBake = NormalBake{request.normal.heightScale, request.normal.filter};
         break;
     case BakeKind::Cone:
         assets->cone = outcome.cone;
@@ -63,6 +67,24 @@ Result<DocumentState> withBake(const DocumentState& state, const BakeOutcome& ou
     mapPath(next.material.maps, kind).clear();
     next.setUnsaved(kind, true);
     return next;
+}
+
+QString staleNormalBake(const DocumentState& state, NormalFilter filter) {
+    if (!state.normalBake || !state.hasMap(MapKind::Normal))
+        return {};
+    const NormalBake& bake = *state.normalBake;
+    QStringList reasons;
+    if (bake.heightScale != state.material.heightScale)
+        reasons << QObject::tr("baked at height scale %1, now %2")
+                       .arg(bake.heightScale, 0, 'g', 4)
+                       .arg(state.material.heightScale, 0, 'g', 4);
+    if (bake.filter != filter)
+        reasons << QObject::tr("baked with the %1 filter, now %2")
+                       .arg(QString::fromUtf8(toString(bake.filter).data()),
+                            QString::fromUtf8(toString(filter).data()));
+    if (reasons.isEmpty())
+        return {};
+    return QObject::tr("Out of date: %1. Bake it again.").arg(reasons.join(QStringLiteral("; ")));
 }
 
 } // namespace px::studio

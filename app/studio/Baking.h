@@ -18,4 +18,8 @@ Result<DocumentState> withBake(const DocumentState& state, const BakeOutcome& ou
 
 MapKind mapKindOf(BakeKind kind);
 
+// Why the normal map baked here no longer matches the material (another height scale, or another
+// filter than the panel's), or empty when it does or was not baked here.
+QString staleNormalBake(const DocumentState& state, NormalFilter filter);
+
 } // namespace px::studio

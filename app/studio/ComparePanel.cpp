@@ -22,13 +22,15 @@ ComparePanel::ComparePanel(MaterialDocument* document, QWidget* parent)
                            "where the cheap techniques fall apart."));
     m_axis = new QComboBox(this);
     m_axis->setToolTip(tr("Cost: height fetches per ray (deterministic), or measured CPU time."));
+    m_axis->setSizeAdjustPolicy(QComboBox::AdjustToContents); // never cut the axis's name
+    m_axis->setMinimumContentsLength(12);
     m_rays = new QSpinBox(this);
     m_rays->setRange(8, 512);
     m_rays->setValue(64);
-    m_rays->setPrefix(tr("rays "));
-    m_rays->setSuffix(QStringLiteral("²"));
-    m_rays->setToolTip(tr("R: R x R rays per view angle (the canonical trace scene). More rays, "
-                          "steadier percentiles, longer run."));
+    // R × R rays: the field shows R, the label says what it counts (not "64 rays").
+    m_rays->setSuffix(tr(" per side"));
+    m_rays->setToolTip(tr("R: R × R rays per view angle (the canonical trace scene), 64 gives "
+                          "4096 rays. More rays, steadier percentiles, longer run."));
     m_run = new QPushButton(tr("Run"), this);
     m_run->setToolTip(tr("Measure every technique on this material's height map and height "
                          "scale (Ctrl+R). Runs in the background."));
@@ -46,6 +48,7 @@ ComparePanel::ComparePanel(MaterialDocument* document, QWidget* parent)
     controls->addWidget(m_polar);
     controls->addWidget(new QLabel(tr("Cost"), this));
     controls->addWidget(m_axis);
+    controls->addWidget(new QLabel(tr("Rays"), this));
     controls->addWidget(m_rays);
     controls->addWidget(m_run);
     controls->addWidget(m_cancel);
@@ -77,6 +80,10 @@ ComparePanel::ComparePanel(MaterialDocument* document, QWidget* parent)
     });
 }
 
+QString ComparePanel::statusText() const {
+    return m_status->text();
+}
+
 bool ComparePanel::isRunning() const {
     return m_runner->isRunning();
 }
@@ -102,7 +109,6 @@ void ComparePanel::run() {
         for (BenchSetting& setting : qualitySweep(t.id))
             config.settings.push_back(std::move(setting));
     }
-    config.polarDeg = {30.0, 60.0, 80.0, 87.0};
     config.scales = {s.material.heightScale};
     config.rays = m_rays->value();
     config.timingRepeats = 1;
@@ -143,8 +149,9 @@ void ComparePanel::onFinished(const BenchOutcome& outcome) {
         m_axis->clear();
         for (CostAxis axis : m_result->axes)
             m_axis->addItem(QString::fromUtf8(costAxisTitle(axis).data()), static_cast<int>(axis));
-        m_status->setText(tr("Measured in %1 s against the exact intersection, %2² rays per view "
-                             "angle. Click a point to use it in the active viewport.")
+        // Not "%2²": QString::arg reads the superscript two as a digit (placeholder 22).
+        m_status->setText(tr("Measured in %1 s against the exact intersection, %2 × %2 rays per "
+                             "view angle. Click a point to use it in the active viewport.")
                               .arg(outcome.seconds, 0, 'f', 1)
                               .arg(outcome.report->rays));
         showPanel();

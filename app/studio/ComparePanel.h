@@ -37,6 +37,7 @@ public:
     QPushButton* runButton() const { return m_run; }
     QPushButton* cancelButton() const { return m_cancel; }
     QProgressBar* progressBar() const { return m_progress; }
+    QString statusText() const; // the line under the controls
     const std::optional<WorkPrecisionChart>& chart() const { return m_result; }
 
 signals:

@@ -2,16 +2,24 @@
 // Everything an undo step restores: the material, the maps in memory, and each viewport's
 // technique and quality. Maps are shared and immutable, so a snapshot costs a few pointers.
 
-#include "MapKind.h"
+#include "parallax/bake/NormalMapBaker.h"
+#include "parallax/material/MapKind.h"
 #include "parallax/material/Material.h"
 #include "parallax/material/MaterialAssets.h"
 
 #include <array>
 #include <memory>
+#include <optional>
 
 namespace px::studio {
 
 inline constexpr int kMaxViewports = 4;
+
+// How the normal map in memory was baked here: it describes the surface at that height scale.
+struct NormalBake {
+    float heightScale = 0.05f;
+    NormalFilter filter = NormalFilter::Sobel;
+};
 
 // What one viewport traces with. Viewport 1's is the material's own (technique and params).
 struct ViewQuality {
@@ -33,6 +41,8 @@ struct DocumentState {
     // Maps held in memory with no file yet (the generated sample, bakes): written beside the
     // material when it is saved.
     std::array<bool, kAllMapKinds.size()> unsaved{};
+    // Set while the normal map is one baked here (not a loaded file).
+    std::optional<NormalBake> normalBake;
     // Viewports 2..4 (index 0 is unused: viewport 1 shows the material's technique).
     std::array<ViewQuality, kMaxViewports> views = defaultComparisonViews();
 

@@ -86,7 +86,12 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
         const Result<ExportResult> result = m_watcher.result();
         m_export->setEnabled(true);
         if (!result) {
-            m_result->setText(QString::fromStdString(result.error().message));
+            // The core speaks the command line's language; here the option is a check box.
+            QString message = QString::fromStdString(result.error().message);
+            message.replace(QStringLiteral("use --force to replace it"),
+                            tr("tick \"%1\" to replace it").arg(m_force->text()));
+            message.replace(QStringLiteral("even with --force"), tr("even when asked to"));
+            m_result->setText(message);
             emit exportFinished(false);
             return;
         }
@@ -96,6 +101,14 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
             lines << QStringLiteral("  ") + QString::fromStdString(f);
         for (const std::string& n : result->notes)
             lines << QString::fromStdString(n);
+        if (!result->kept.empty()) {
+            QStringList kept;
+            for (const std::string& f : result->kept)
+                kept << QString::fromStdString(f);
+            lines << tr("Kept %n file(s) no export wrote: %1", nullptr,
+                        static_cast<int>(kept.size()))
+                         .arg(kept.join(QStringLiteral(", ")));
+        }
         m_result->setText(lines.join(QLatin1Char('\n')));
         emit exportFinished(true);
     });

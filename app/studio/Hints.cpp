@@ -9,8 +9,8 @@ QString heightScale() {
                        "polygon, in uv units (fractions of a tile). 0 turns parallax off.");
 }
 QString depthMap() {
-    return QObject::tr("The map is a depth map (white = deep, like the depthMap of many tutorials "
-                       "and _disp files): it is read inverted, as 1 - value.");
+    return QObject::tr("The map is a depth map (white = deep, like LearnOpenGL's depthMap and "
+                       "many _disp files): it is read inverted, as 1 - value.");
 }
 QString heightChannel() {
     return QObject::tr("Which channel of the height file holds the height.");
@@ -23,9 +23,10 @@ QString wrap() {
                        "the tile are discarded, so the edges show their real relief.");
 }
 QString minLayers() {
-    return QObject::tr("minLayers: march layers looking straight down. Classic POM shaders "
-                       "pick numLayers = mix(maxLayers, minLayers, |dot(N, V)|); too few shows "
-                       "stair steps.");
+    return QObject::tr(
+        "minLayers: march layers looking straight down. Parallax occlusion mapping "
+        "(Tatarchuk 2006) picks numLayers = mix(maxLayers, minLayers, |dot(N, V)|); too few shows "
+        "stair steps.");
 }
 QString maxLayers() {
     return QObject::tr("maxLayers: march layers at grazing angles, where a ray crosses the most "
@@ -34,7 +35,7 @@ QString maxLayers() {
 QString qualityRange() {
     return QObject::tr("u_parallax_quality (x, y): the quality looking straight down and at "
                        "grazing angles; layers = quality x 50. The same setting as min/max "
-                       "layers, in the two-value form of the tutorial shaders.");
+                       "layers, in the two-value form of common POM shaders.");
 }
 QString binarySteps() {
     return QObject::tr("numBinarySteps: halvings of the last layer after the march (relief "
@@ -59,7 +60,8 @@ QString stepCap(Technique technique) {
 }
 QString selfShadow() {
     return QObject::tr("Soft self-shadowing: a second march from the hit towards the light "
-                       "(the tutorials' ParallaxSoftShadowMultiplier), so bumps cast shadows.");
+                       "(Tatarchuk 2006's soft shadows, the ParallaxSoftShadowMultiplier of common "
+                       "shaders), so bumps cast shadows.");
 }
 QString shadowSoftness() {
     return QObject::tr("0: hard shadows, any occluder blocks the light. 1: soft, the penumbra "
@@ -67,16 +69,16 @@ QString shadowSoftness() {
 }
 QString normalSource() {
     return QObject::tr("Shading normals: from the normal map, or computed from the height map "
-                       "in the shader (4-tap central differences or 3x3 Sobel).");
+                       "in the shader (4-tap central differences or a 3x3 Sobel filter).");
 }
 QString normalGreen() {
     return QObject::tr("Green channel of the normal map: OpenGL (Y+: glTF, Godot, Unity, "
                        "Blender) or DirectX (Y-: Unreal).");
 }
 QString lighting() {
-    return QObject::tr("Blinn-Phong as in the classic parallax tutorials, or metallic-roughness "
-                       "for materials headed "
-                       "to engines.");
+    return QObject::tr(
+        "Blinn-Phong as in the classic parallax demos, or metallic-roughness for materials headed "
+        "to engines.");
 }
 QString lightAzimuth() {
     return QObject::tr("Where the light comes from, around the vertical axis: 0 from the front "

@@ -12,10 +12,16 @@
 #include "ViewPanel.h"
 #include "ViewportGrid.h"
 
+#include <QAbstractSpinBox>
+#include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QFileInfo>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QMessageBox>
+#include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
@@ -56,6 +62,7 @@ MainWindow::MainWindow(const QString& liveReason, QWidget* parent)
     createPanels(liveReason);
     createActions();
     createMenus();
+    qApp->installEventFilter(this); // Ctrl+Z in a spin box: see eventFilter
 
     m_rendererLabel = new QLabel(this);
     const GlProbe& gl = probeOpenGl();
@@ -76,9 +83,40 @@ MainWindow::MainWindow(const QString& liveReason, QWidget* parent)
     updateRecentMenu();
     updateTitle();
     resize(1400, 900);
+    fitToScreen();
+}
+
+void MainWindow::fitToScreen() {
+    // Never larger than the screen's free area (a restored or default size may be).
+    const QScreen* screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
+    if (!screen)
+        return;
+    const QSize free = screen->availableGeometry().size();
+    const QSize frame = frameGeometry().size() - geometry().size(); // title bar and borders
+    const QSize room = free - frame;
+    if (width() > room.width() || height() > room.height())
+        resize(size().boundedTo(room));
 }
 
 MainWindow::~MainWindow() = default;
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    // A spin box's line edit takes Ctrl+Z and Ctrl+Y for its own text, so undo did nothing while
+    // one had focus. Here undo is the document's: the shortcut override is withheld from the
+    // spin boxes of this window, and the Undo/Redo actions fire.
+    if (event->type() == QEvent::ShortcutOverride) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        const QKeySequence pressed(key->keyCombination());
+        auto* widget = qobject_cast<QWidget*>(watched);
+        const bool undoKey = m_actions && (m_actions->undo->shortcuts().contains(pressed) ||
+                                           m_actions->redo->shortcuts().contains(pressed));
+        if (undoKey && widget && widget->window() == this &&
+            (qobject_cast<QAbstractSpinBox*>(widget) ||
+             qobject_cast<QAbstractSpinBox*>(widget->parentWidget())))
+            return true;
+    }
+    return QMainWindow::eventFilter(watched, event);
+}
 
 void MainWindow::createPanels(const QString& liveReason) {
     m_viewports = new ViewportGrid(m_document, liveReason, this);
@@ -184,10 +222,33 @@ void MainWindow::showNotes(const std::vector<std::string>& notes) {
 }
 
 void MainWindow::startBake(BakeKind kind) {
-    if (!m_document->state().hasMap(MapKind::Height)) {
+    const DocumentState& state = m_document->state();
+    if (!state.hasMap(MapKind::Height)) {
         showProblem(tr("Nothing to bake"), tr("Load a height map first."));
         return;
     }
+    if (kind == BakeKind::Normal && state.hasMap(MapKind::Normal) && !state.normalBake) {
+        // A loaded normal map is the artist's: replacing it with a bake is asked, not assumed.
+        // Window-modal and non-blocking, like every message here.
+        auto* box = new QMessageBox(
+            QMessageBox::Question, tr("Replace the loaded normal map?"),
+            tr("The normal map %1 was loaded from its file. Bake one from the height map in its "
+               "place? (The file itself is not changed.)")
+                .arg(QFileInfo(QString::fromStdString(state.material.maps.normal)).fileName()),
+            QMessageBox::Cancel, this);
+        box->setObjectName(QStringLiteral("confirm-normal-bake"));
+        QPushButton* bake = box->addButton(tr("Bake"), QMessageBox::AcceptRole);
+        box->setDefaultButton(QMessageBox::Cancel);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->setWindowModality(Qt::WindowModal);
+        connect(bake, &QPushButton::clicked, this, [this] { runBake(BakeKind::Normal); });
+        box->open();
+        return;
+    }
+    runBake(kind);
+}
+
+void MainWindow::runBake(BakeKind kind) {
     m_baker->start(makeBakeRequest(m_document->state(), kind, m_mapsPanel->normalFilter()));
     statusBar()->showMessage(
         tr("Baking the %1 in the background (Esc cancels)…").arg(bakeTitle(kind)));
@@ -221,6 +282,7 @@ void MainWindow::restoreLayout() {
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     const int count = settings.value(QStringLiteral("window/viewports"), 1).toInt();
     m_viewports->setLayoutCount(count);
+    fitToScreen(); // the screen may be smaller than the one the layout was saved on
     m_layoutRestored = true;
 }
 

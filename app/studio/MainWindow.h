@@ -4,10 +4,11 @@
 // on close. The document does the editing; the window does files, dialogs and messages.
 
 #include "BakeRunner.h"
-#include "MapKind.h"
+#include "parallax/material/MapKind.h"
 #include "parallax/sample/ProceduralMaps.h"
 
 #include <QMainWindow>
+#include <QPointer>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,9 +17,14 @@ class QAction;
 class QLabel;
 class QMenu;
 
+namespace px {
+struct ImportedSet;
+}
+
 namespace px::studio {
 
 class ComparePanel;
+class ImportSummaryDialog;
 class MapsPanel;
 class MaterialDocument;
 class MaterialPanel;
@@ -51,13 +57,22 @@ public:
     bool openFile(const QString& path);
     bool saveTo(const QString& path);
     bool loadMap(MapKind kind, const QString& path, bool depth = false);
-    bool importFolder(const QString& folder);
-    bool importFiles(const QStringList& paths); // what a drop does
+    // A folder or files holding a texture set with a height map become a new material named after
+    // the set; `set` chooses where there are several (empty: ask, or refuse when not interactive).
+    // Files without a height map add to the material being edited.
+    bool importFolder(const QString& folder, const QString& set = {});
+    bool importFiles(const QStringList& paths, const QString& set = {}); // what a drop does
+    // The last import's summary (hidden when not interactive; tests read and click it).
+    ImportSummaryDialog* importSummary() const;
+    // Bakes in the background; over a normal map loaded from a file it asks first.
     void startBake(BakeKind kind);
 
     // The window's size, docks and layout as the user left them (settings), restored at start-up
     // of an interactive session (not for screenshots and tests, which want a known layout).
     void restoreLayout();
+
+    // The shortcut list of Help > Keyboard Shortcuts (F1), grouped by menu, as HTML.
+    QString shortcutsTable() const;
 
     // The last problem shown to the user (tests read it; the message box shows it).
     QString lastProblem() const { return m_lastProblem; }
@@ -68,6 +83,7 @@ signals:
     void problemShown(const QString& message);
 
 protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
@@ -77,10 +93,13 @@ private:
     void createActions();
     void createMenus();
     void updateTitle();
+    void fitToScreen();
     void updateRecentMenu();
     void showProblem(const QString& title, const QString& message);
     void showNotes(const std::vector<std::string>& notes);
     void adopt(const QString& text, const DocumentState& state);
+    bool importSet(const std::vector<std::string>& files, const QString& source, QString set);
+    void showImportSummary(const ImportedSet& set);
     bool maybeSave(); // false: the user cancelled
     bool save();
     bool saveAs();
@@ -89,6 +108,7 @@ private:
     void importFolderDialog();
     void exportDialog();
     void showShortcuts();
+    void runBake(BakeKind kind);
     void onBakeFinished(const BakeOutcome& outcome);
     void bakeMissingConeMaps();
 
@@ -104,6 +124,7 @@ private:
     QLabel* m_rendererLabel = nullptr;
     QMenu* m_recentMenu = nullptr;
     QMenu* m_panelsMenu = nullptr;
+    QPointer<ImportSummaryDialog> m_importSummary;
     QString m_lastProblem;
     bool m_interactive = true;
     bool m_layoutRestored = false; // save it on close only if it was restored

@@ -1,9 +1,11 @@
 // MainWindow: opening, saving and importing, by menu, dialog and drop.
 
 #include "ExportDialog.h"
+#include "ImportSummaryDialog.h"
 #include "MainWindow.h"
 #include "MapLoading.h"
 #include "MaterialDocument.h"
+#include "MaterialPanel.h"
 #include "MaterialSaver.h"
 #include "RecentFiles.h"
 #include "SampleMaterial.h"
@@ -13,6 +15,7 @@
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
@@ -123,8 +126,10 @@ void MainWindow::adopt(const QString& text, const DocumentState& state) {
 }
 
 bool MainWindow::loadMap(MapKind kind, const QString& path, bool depth) {
-    if (kind == MapKind::Height && !depth)
-        depth = mapKindFromFileName(path.toStdString()).value_or(SuffixMatch{kind, false}).depth;
+    if (kind == MapKind::Height && !depth) {
+        const std::optional<SuffixMatch> match = mapKindFromFileName(path.toStdString());
+        depth = match && match->depth;
+    }
     Result<Loaded> loaded = loadMapFile(m_document->state(), kind, path.toStdString(), depth);
     if (!loaded) {
         showProblem(
@@ -141,55 +146,93 @@ bool MainWindow::loadMap(MapKind kind, const QString& path, bool depth) {
     return true;
 }
 
-bool MainWindow::importFolder(const QString& folder) {
-    Result<FoundMaps> found = findMapsInFolder(folder.toStdString());
-    if (!found) {
-        showProblem(tr("Cannot import the folder"), QString::fromStdString(found.error().message));
+bool MainWindow::importFolder(const QString& folder, const QString& set) {
+    Result<std::vector<std::string>> files = folderFiles(folder.toStdString());
+    if (!files) {
+        showProblem(tr("Cannot import the folder"), QString::fromStdString(files.error().message));
         return false;
     }
-    Result<Loaded> loaded = loadMaps(m_document->state(), found->maps);
-    if (!loaded) {
-        showProblem(tr("Cannot import the folder"), QString::fromStdString(loaded.error().message));
-        return false;
-    }
-    adopt(tr("Import %1").arg(QFileInfo(folder).fileName()), loaded->state);
-    QStringList names;
-    for (const FoundMap& m : found->maps)
-        names << QString::fromUtf8(mapTitle(m.kind).data()).toLower();
-    statusBar()->showMessage(
-        tr("Imported %1 from %2.")
-            .arg(names.join(QStringLiteral(", ")), QFileInfo(folder).fileName()),
-        8000);
-    return true;
+    return importSet(*files, folder, set);
 }
 
-bool MainWindow::importFiles(const QStringList& paths) {
+bool MainWindow::importFiles(const QStringList& paths, const QString& set) {
     if (paths.size() == 1 && isMaterialFile(paths.front()))
         return openFile(paths.front());
     if (paths.size() == 1 && QFileInfo(paths.front()).isDir())
-        return importFolder(paths.front());
+        return importFolder(paths.front(), set);
     std::vector<std::string> files;
     for (const QString& p : paths)
         files.push_back(p.toStdString());
-    FoundMaps found = classifyFiles(files);
     // One image with no known suffix: a height map is what this editor is about.
-    if (paths.size() == 1 && found.maps.empty())
+    if (paths.size() == 1 && textureSetNames(files).empty())
         return loadMap(MapKind::Height, paths.front());
-    if (found.maps.empty()) {
-        showProblem(tr("Nothing to import"),
-                    tr("None of the files has a map suffix (_albedo, _height, _disp, _normal, "
-                       "...): %1")
-                        .arg(paths.join(QStringLiteral(", "))));
+    return importSet(files, paths.size() == 1 ? paths.front() : tr("the dropped files"), set);
+}
+
+bool MainWindow::importSet(const std::vector<std::string>& files, const QString& source,
+                           QString set) {
+    const std::vector<std::string> names = textureSetNames(files);
+    if (set.isEmpty() && names.size() > 1 && m_interactive) {
+        // Never mixed: the user says which.
+        QStringList items;
+        for (const std::string& name : names)
+            items << QString::fromStdString(name);
+        bool ok = false;
+        set = QInputDialog::getItem(this, tr("Which texture set?"),
+                                    tr("%1 holds %2 texture sets. Import which one?")
+                                        .arg(QFileInfo(source).fileName())
+                                        .arg(items.size()),
+                                    items, 0, false, &ok);
+        if (!ok)
+            return false;
+    }
+    Result<TextureSetPlan> plan = planTextureSet(files, source.toStdString(), set.toStdString());
+    if (!plan) {
+        showProblem(tr("Nothing imported"), QString::fromStdString(plan.error().message));
         return false;
     }
-    Result<Loaded> loaded = loadMaps(m_document->state(), found.maps);
-    if (!loaded) {
-        showProblem(tr("Cannot import the maps"), QString::fromStdString(loaded.error().message));
+    // Files without a height map are not a material of their own: they add to this one.
+    if (!plan->find(MapKind::Height)) {
+        Result<Loaded> loaded = loadMaps(m_document->state(), plan->assigned);
+        if (!loaded) {
+            showProblem(tr("Cannot import the maps"),
+                        QString::fromStdString(loaded.error().message));
+            return false;
+        }
+        adopt(tr("Import %n map(s)", nullptr, static_cast<int>(plan->assigned.size())),
+              loaded->state);
+        showNotes(loaded->notes);
+        return true;
+    }
+    if (!maybeSave())
+        return false;
+    Result<ImportedSet> imported = importTextureSet(*plan);
+    if (!imported) {
+        showProblem(tr("Cannot import the texture set"),
+                    QString::fromStdString(imported.error().message));
         return false;
     }
-    adopt(tr("Import %n map(s)", nullptr, static_cast<int>(found.maps.size())), loaded->state);
-    showNotes(loaded->notes);
+    DocumentState state = importedState(*imported);
+    state.views = m_document->state().views; // the viewports' techniques are not the material's
+    m_document->reset(std::move(state), {});
+    showImportSummary(*imported);
+    bakeMissingConeMaps();
     return true;
+}
+
+ImportSummaryDialog* MainWindow::importSummary() const {
+    return m_importSummary;
+}
+
+void MainWindow::showImportSummary(const ImportedSet& set) {
+    delete m_importSummary; // the previous import's, if still open
+    m_importSummary = new ImportSummaryDialog(set, this);
+    m_importSummary->setAttribute(Qt::WA_DeleteOnClose);
+    connect(m_importSummary, &ImportSummaryDialog::flipRequested, m_materialPanel,
+            &MaterialPanel::flipDepth);
+    statusBar()->showMessage(QString::fromStdString(set.relief.summary), 15000);
+    if (m_interactive)
+        m_importSummary->show();
 }
 
 void MainWindow::openDialog() {

@@ -11,14 +11,21 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDockWidget>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
+#include <QSet>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QToolButton>
 #include <QUndoStack>
+#include <QVBoxLayout>
+#include <algorithm>
 
 namespace px::studio {
 
@@ -42,7 +49,15 @@ void MainWindow::createActions() {
     m_actions->undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
     m_actions->undo->setShortcut(QKeySequence::Undo);
     m_actions->redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
-    m_actions->redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    // Ctrl+Y and Ctrl+Shift+Z on every platform, each once: where the platform's Redo already is
+    // Ctrl+Y, listing it twice made the shortcut ambiguous and neither fired.
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    for (const QKeySequence& key :
+         {QKeySequence(Qt::CTRL | Qt::Key_Y), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)}) {
+        if (!redoKeys.contains(key))
+            redoKeys << key;
+    }
+    m_actions->redo->setShortcuts(redoKeys);
     m_actions->undo->setStatusTip(tr("Undo the last edit; the History panel lists every step."));
     m_actions->redo->setStatusTip(tr("Redo the edit just undone."));
 }
@@ -249,24 +264,80 @@ void MainWindow::createMenus() {
     m_panelsMenu->addAction(bar->toggleViewAction());
 }
 
-void MainWindow::showShortcuts() {
-    QStringList rows;
-    for (QAction* a : findChildren<QAction*>()) {
-        if (!a->shortcut().isEmpty() && !a->text().isEmpty())
-            rows << QStringLiteral("<tr><td>%1</td><td><b>%2</b></td></tr>")
-                        .arg(a->text().remove(QLatin1Char('&')),
-                             a->shortcut().toString(QKeySequence::NativeText));
+namespace {
+
+QString shortcutRow(const QString& what, const QString& keys) {
+    return QStringLiteral("<tr><td>%1</td><td><b>%2</b></td></tr>").arg(what, keys);
+}
+
+QString groupHeading(const QString& title) {
+    return QStringLiteral("<tr><th colspan=2 align=left><br>%1</th></tr>").arg(title);
+}
+
+// Every action of `menu` and its submenus that has a shortcut, once.
+void collectShortcuts(const QMenu* menu, QStringList& rows, QSet<const QAction*>& seen) {
+    for (const QAction* a : menu->actions()) {
+        if (a->menu()) {
+            collectShortcuts(a->menu(), rows, seen);
+        } else if (!a->shortcut().isEmpty() && !a->text().isEmpty() && !seen.contains(a)) {
+            seen.insert(a);
+            rows << shortcutRow(a->text().remove(QLatin1Char('&')),
+                                a->shortcut().toString(QKeySequence::NativeText));
+        }
     }
-    rows.sort();
-    const QString mouse =
-        tr("<tr><td>Orbit</td><td><b>drag</b></td></tr><tr><td>Zoom</td><td><b>wheel</b></td></tr>"
-           "<tr><td>Move the light</td><td><b>Ctrl+drag</b></td></tr>"
-           "<tr><td>Move the A/B divider</td><td><b>drag the line</b></td></tr>");
-    QMessageBox box(
-        QMessageBox::NoIcon, tr("Keyboard and Mouse"),
-        QStringLiteral("<table cellspacing=6>%1%2</table>").arg(rows.join(QString()), mouse),
-        QMessageBox::Close, this);
-    box.exec();
+}
+
+} // namespace
+
+QString MainWindow::shortcutsTable() const {
+    QString html;
+    QSet<const QAction*> seen;
+    for (const QAction* top : menuBar()->actions()) {
+        if (!top->menu())
+            continue;
+        QStringList rows;
+        collectShortcuts(top->menu(), rows, seen);
+        if (!rows.isEmpty())
+            html += groupHeading(top->text().remove(QLatin1Char('&'))) + rows.join(QString());
+    }
+    QStringList other;
+    for (const QAction* a : findChildren<QAction*>()) {
+        if (!a->shortcut().isEmpty() && !a->text().isEmpty() && !seen.contains(a)) {
+            seen.insert(a);
+            other << shortcutRow(a->text().remove(QLatin1Char('&')),
+                                 a->shortcut().toString(QKeySequence::NativeText));
+        }
+    }
+    other.sort();
+    if (!other.isEmpty())
+        html += groupHeading(tr("In a view")) + other.join(QString());
+    html += groupHeading(tr("Mouse")) + shortcutRow(tr("Orbit"), tr("drag")) +
+            shortcutRow(tr("Zoom"), tr("wheel")) +
+            shortcutRow(tr("Move the light"), tr("Ctrl+drag")) +
+            shortcutRow(tr("Move the A/B divider"), tr("drag the line"));
+    return QStringLiteral("<table cellspacing=4>%1</table>").arg(html);
+}
+
+void MainWindow::showShortcuts() {
+    // A dialog of its own (not a message box): its title is never cut, and the list scrolls.
+    auto* dialog = new QDialog(this);
+    dialog->setObjectName(QStringLiteral("shortcuts"));
+    dialog->setWindowTitle(tr("Keyboard and Mouse Shortcuts"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    auto* label = new QLabel(shortcutsTable(), dialog);
+    label->setTextFormat(Qt::RichText);
+    auto* scroll = new QScrollArea(dialog);
+    scroll->setWidget(label);
+    scroll->setWidgetResizable(true);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
+    connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::close);
+    auto* layout = new QVBoxLayout(dialog);
+    layout->addWidget(scroll, 1);
+    layout->addWidget(buttons);
+    const int titleWidth = dialog->fontMetrics().horizontalAdvance(dialog->windowTitle());
+    dialog->resize(std::max(label->sizeHint().width() + 48, titleWidth + 160),
+                   std::min(label->sizeHint().height() + 80, 640));
+    dialog->show();
 }
 
 } // namespace px::studio

@@ -2,24 +2,16 @@
 
 #include "parallax/heightfield/HeightFieldLoader.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/material/MapPaths.h"
 #include "parallax/material/MaterialFile.h"
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <sstream>
 
 namespace px::studio {
 
-namespace fs = std::filesystem;
-
 namespace {
-
-std::string absolute(const std::string& path) {
-    std::error_code ec;
-    const fs::path p = fs::absolute(fs::path(path), ec);
-    return (ec ? fs::path(path) : p).lexically_normal().string();
-}
 
 Result<Image> readMapImage(const std::string& path, int minChannels, const char* what) {
     Result<Image> image = readImage(path);
@@ -88,6 +80,7 @@ void clearMap(MaterialAssets& assets, DocumentState& state, MapKind kind) {
         break;
     case MapKind::Normal:
         assets.normal = {};
+        state.normalBake.reset();
         break;
     default:
         break;
@@ -162,6 +155,13 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
         if (!image)
             return image.error();
         assets.normal = std::move(*image);
+        next.normalBake.reset();
+        // A normal map is loaded to be used (unless the user turned normals off).
+        if (next.material.normalSource != NormalSource::None &&
+            next.material.normalSource != NormalSource::Map) {
+            next.material.normalSource = NormalSource::Map;
+            loaded.notes.push_back("Normals: map (the loaded normal map shades the surface).");
+        }
         break;
     }
     case MapKind::Cone:
@@ -187,7 +187,7 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
         break;
     }
     }
-    mapPath(next.material.maps, kind) = absolute(path);
+    mapPath(next.material.maps, kind) = absolutePath(path);
     next.setUnsaved(kind, false);
     next.assets = std::make_shared<const MaterialAssets>(std::move(assets));
     return loaded;
@@ -200,53 +200,11 @@ Result<Loaded> reloadHeight(const DocumentState& state) {
     return loadMapFile(state, MapKind::Height, file, state.material.heightIsDepth);
 }
 
-FoundMaps classifyFiles(const std::vector<std::string>& files) {
-    std::vector<std::string> sorted = files;
-    std::sort(sorted.begin(), sorted.end());
-    FoundMaps found;
-    for (const std::string& file : sorted) {
-        const std::optional<SuffixMatch> match =
-            isImageFileName(file) ? mapKindFromFileName(file) : std::nullopt;
-        if (!match) {
-            found.unmatched.push_back(file);
-            continue;
-        }
-        const bool seen = std::any_of(found.maps.begin(), found.maps.end(),
-                                      [&](const FoundMap& m) { return m.kind == match->kind; });
-        if (seen)
-            found.duplicates.push_back(file);
-        else
-            found.maps.push_back({match->kind, file, match->depth});
-    }
-    // The height map first: cone maps are checked against it.
-    std::stable_sort(found.maps.begin(), found.maps.end(),
-                     [](const FoundMap& a, const FoundMap& b) {
-                         return a.kind == MapKind::Height && b.kind != MapKind::Height;
-                     });
-    return found;
-}
-
-Result<FoundMaps> findMapsInFolder(const std::string& folder) {
-    std::error_code ec;
-    std::vector<std::string> files;
-    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-        if (it->is_regular_file(ec))
-            files.push_back(it->path().string());
-    }
-    if (ec)
-        return fileError(folder, "cannot read the folder (" + ec.message() + ")");
-    FoundMaps found = classifyFiles(files);
-    if (found.maps.empty())
-        return fileError(folder, "no file whose name ends in a map suffix (_albedo, _height, "
-                                 "_disp, _normal, ...)");
-    return found;
-}
-
-Result<Loaded> loadMaps(const DocumentState& state, const std::vector<FoundMap>& maps) {
+Result<Loaded> loadMaps(const DocumentState& state, const std::vector<SetFile>& maps) {
     Loaded all;
     all.state = state;
-    for (const FoundMap& map : maps) {
-        Result<Loaded> next = loadMapFile(all.state, map.kind, map.path, map.depth);
+    for (const SetFile& map : maps) {
+        Result<Loaded> next = loadMapFile(all.state, map.kind, map.path, map.depthBySuffix);
         if (!next)
             return next.error();
         all.state = std::move(next->state);
@@ -255,28 +213,12 @@ Result<Loaded> loadMaps(const DocumentState& state, const std::vector<FoundMap>&
     return all;
 }
 
-MaterialMaps absoluteMapPaths(const MaterialMaps& maps, const std::string& materialFile) {
-    MaterialMaps out = maps;
-    for (MapKind kind : kAllMapKinds) {
-        std::string& path = mapPath(out, kind);
-        if (!path.empty())
-            path = absolute(resolveMapPath(absolute(materialFile), path));
-    }
-    return out;
-}
-
-MaterialMaps relativeMapPaths(const MaterialMaps& maps, const std::string& materialFile) {
-    MaterialMaps out = maps;
-    const fs::path dir = fs::path(absolute(materialFile)).parent_path();
-    for (MapKind kind : kAllMapKinds) {
-        std::string& path = mapPath(out, kind);
-        if (path.empty())
-            continue;
-        const fs::path relative = fs::path(absolute(path)).lexically_relative(dir);
-        if (!relative.empty())
-            path = relative.generic_string();
-    }
-    return out;
+DocumentState importedState(ImportedSet set) {
+    DocumentState state;
+    state.material = std::move(set.material);
+    set.assets.albedo = set.assets.albedo.empty() ? Image{} : toRgb(std::move(set.assets.albedo));
+    state.assets = std::make_shared<const MaterialAssets>(std::move(set.assets));
+    return state;
 }
 
 } // namespace px::studio

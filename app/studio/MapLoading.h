@@ -5,6 +5,8 @@
 
 #include "DocumentState.h"
 #include "parallax/Result.h"
+#include "parallax/material/MapPaths.h"
+#include "parallax/material/TextureSetImport.h"
 
 #include <string>
 #include <vector>
@@ -29,28 +31,11 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
 // (after they changed). Fails when the height map has no file.
 Result<Loaded> reloadHeight(const DocumentState& state);
 
-// A map file found by its suffix.
-struct FoundMap {
-    MapKind kind;
-    std::string path;
-    bool depth = false;
-};
+// Loads every map of a texture set's plan into `state`, all or nothing (files dropped without a
+// height map add to the material being edited).
+Result<Loaded> loadMaps(const DocumentState& state, const std::vector<SetFile>& maps);
 
-// The image files of a folder (or a list of files) whose suffix names a map, the height map
-// first; files with no known suffix are listed in `unmatched`. Errors: unreadable folder.
-struct FoundMaps {
-    std::vector<FoundMap> maps;
-    std::vector<std::string> unmatched;
-    std::vector<std::string> duplicates; // a second file for a map already found (skipped)
-};
-Result<FoundMaps> findMapsInFolder(const std::string& folder);
-FoundMaps classifyFiles(const std::vector<std::string>& files);
-
-// Loads every found map into `state`, all or nothing.
-Result<Loaded> loadMaps(const DocumentState& state, const std::vector<FoundMap>& maps);
-
-// Map paths relative to / resolved against the folder of `materialFile`.
-MaterialMaps absoluteMapPaths(const MaterialMaps& maps, const std::string& materialFile);
-MaterialMaps relativeMapPaths(const MaterialMaps& maps, const std::string& materialFile);
+// A new document holding an imported texture set: no file yet, the maps the set's files.
+DocumentState importedState(ImportedSet set);
 
 } // namespace px::studio

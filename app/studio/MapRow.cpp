@@ -29,6 +29,13 @@ MapRow::MapRow(MapKind kind, bool bakeable, QWidget* parent) : QWidget(parent), 
     m_source = new QLabel(this);
     m_source->setTextFormat(Qt::PlainText);
     m_source->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_source->setWordWrap(true); // "made here, not saved yet" wraps rather than being cut
+    m_warning = new QLabel(this);
+    m_warning->setTextFormat(Qt::PlainText);
+    m_warning->setWordWrap(true);
+    m_warning->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_warning->setStyleSheet(QStringLiteral("QLabel { color: #b35c00; }"));
+    m_warning->hide();
     m_load = new QToolButton(this);
     m_load->setText(tr("Load…"));
     m_load->setToolTip(tr("Load the %1 map from a file (or drop a file on this row).")
@@ -41,6 +48,7 @@ MapRow::MapRow(MapKind kind, bool bakeable, QWidget* parent) : QWidget(parent), 
     text->setSpacing(0);
     text->addWidget(m_title);
     text->addWidget(m_source);
+    text->addWidget(m_warning);
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     layout->addWidget(m_thumbnail);
@@ -66,6 +74,16 @@ MapRow::MapRow(MapKind kind, bool bakeable, QWidget* parent) : QWidget(parent), 
 
 QString MapRow::sourceText() const {
     return m_source->text();
+}
+
+void MapRow::setWarning(const QString& text) {
+    m_warning->setText(text);
+    m_warning->setToolTip(text);
+    m_warning->setVisible(!text.isEmpty());
+}
+
+QString MapRow::warningText() const {
+    return m_warning->text();
 }
 
 void MapRow::setBakeEnabled(bool enabled) {

@@ -3,7 +3,7 @@
 // here and not saved yet), and buttons to load, clear or bake it. Files dropped on the row load
 // as this map.
 
-#include "MapKind.h"
+#include "parallax/material/MapKind.h"
 
 #include <QWidget>
 
@@ -25,12 +25,15 @@ public:
     QToolButton* bakeButton() const { return m_bake; }
     QToolButton* loadButton() const { return m_load; }
     QString sourceText() const;
+    // A line under the source in warning colour (a baked map out of date); empty hides it.
+    void setWarning(const QString& text);
+    QString warningText() const;
 
 signals:
-    void loadRequested(px::studio::MapKind kind);
-    void clearRequested(px::studio::MapKind kind);
-    void bakeRequested(px::studio::MapKind kind);
-    void fileDropped(px::studio::MapKind kind, const QString& path);
+    void loadRequested(px::MapKind kind);
+    void clearRequested(px::MapKind kind);
+    void bakeRequested(px::MapKind kind);
+    void fileDropped(px::MapKind kind, const QString& path);
 
 protected:
     void dragEnterEvent(QDragEnterEvent* event) override;
@@ -41,6 +44,7 @@ private:
     QLabel* m_thumbnail;
     QLabel* m_title;
     QLabel* m_source;
+    QLabel* m_warning;
     QToolButton* m_load;
     QToolButton* m_clear;
     QToolButton* m_bake = nullptr;

@@ -1,5 +1,6 @@
 #include "MapsPanel.h"
 
+#include "Baking.h"
 #include "MapRow.h"
 #include "MaterialDocument.h"
 
@@ -42,6 +43,7 @@ MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* par
     m_filter->setCurrentText(QStringLiteral("sobel"));
     m_filter->setToolTip(tr("Derivative filter of the normal bake: central (4 taps, sharpest), "
                             "Sobel or Scharr (3x3, smoother). Each gives the same strength."));
+    connect(m_filter, &QComboBox::currentIndexChanged, this, &MapsPanel::refresh);
     auto* form = new QFormLayout;
     form->addRow(tr("Normal filter"), m_filter);
     m_bakeLabel = new QLabel(tr("No bake running."), this);
@@ -123,9 +125,11 @@ void MapsPanel::clearMap(MapKind kind) {
                          s.assets = assets;
                          mapPath(s.material.maps, kind).clear();
                          s.setUnsaved(kind, false);
-                         if (kind == MapKind::Normal &&
-                             s.material.normalSource == NormalSource::Map)
-                             s.material.normalSource = NormalSource::HeightCentral;
+                         if (kind == MapKind::Normal) {
+                             s.normalBake.reset();
+                             if (s.material.normalSource == NormalSource::Map)
+                                 s.material.normalSource = NormalSource::HeightCentral;
+                         }
                          // A technique left without its cone map falls back to the march.
                          for (int v = 0; v < kMaxViewports; ++v) {
                              if (!s.canTrace(s.view(v).technique))
@@ -141,6 +145,7 @@ void MapsPanel::refresh() {
         row->refresh(s);
         row->setBakeEnabled(height && !m_baker->isBusy());
     }
+    m_rows.at(MapKind::Normal)->setWarning(staleNormalBake(s, normalFilter()));
 }
 
 } // namespace px::studio

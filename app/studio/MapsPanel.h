@@ -3,7 +3,7 @@
 // with its Cancel button.
 
 #include "BakeRunner.h"
-#include "MapKind.h"
+#include "parallax/material/MapKind.h"
 
 #include <QWidget>
 #include <map>
@@ -29,8 +29,8 @@ public:
     NormalFilter normalFilter() const;
 
 signals:
-    void loadRequested(px::studio::MapKind kind);
-    void fileDropped(px::studio::MapKind kind, const QString& path);
+    void loadRequested(px::MapKind kind);
+    void fileDropped(px::MapKind kind, const QString& path);
     void bakeRequested(px::studio::BakeKind kind);
 
 private:

@@ -26,11 +26,17 @@ void MaterialDocument::edit(const QString& text, const std::function<void(Docume
                             const QString& mergeKey) {
     DocumentState next = m_state;
     change(next);
-    const bool same = next.assets == m_state.assets && next.views == m_state.views &&
-                      next.unsaved == m_state.unsaved &&
-                      materialToJson(next.material) == materialToJson(m_state.material);
-    if (same)
+    const bool sameMaterial = next.assets == m_state.assets && next.unsaved == m_state.unsaved &&
+                              materialToJson(next.material) == materialToJson(m_state.material);
+    if (sameMaterial && next.views == m_state.views)
         return;
+    if (sameMaterial) {
+        // Viewports 2..4's techniques are view settings, like the camera: applied at once and
+        // kept out of the material's history.
+        m_state.views = next.views;
+        notify(ViewsChanged);
+        return;
+    }
     m_undo.push(
         new StateCommand(this, text, m_state, std::move(next), mergeKey, m_mergeGeneration));
 }
@@ -46,6 +52,11 @@ void MaterialDocument::reset(DocumentState state, const QString& filePath) {
 }
 
 void MaterialDocument::markSaved(DocumentState saved, const QString& filePath) {
+    for (int i = 0; i < m_undo.count(); ++i) {
+        // The stack's commands are all StateCommands (edit() is the only way in).
+        auto* step = static_cast<StateCommand*>(const_cast<QUndoCommand*>(m_undo.command(i)));
+        step->adoptSavedMaps(saved);
+    }
     m_filePath = filePath;
     m_state = std::move(saved);
     m_cleanJson = materialToJson(m_state.material);
@@ -54,7 +65,15 @@ void MaterialDocument::markSaved(DocumentState saved, const QString& filePath) {
     notify(MaterialChanged | FileChanged);
 }
 
-void MaterialDocument::setState(const DocumentState& next) {
+void MaterialDocument::setState(const DocumentState& stepState) {
+    // An undo step restores the material, never the other viewports' techniques (not history);
+    // a viewport whose maps the step took away falls back to the march.
+    DocumentState next = stepState;
+    next.views = m_state.views;
+    for (int v = 1; v < kMaxViewports; ++v) {
+        if (!next.canTrace(next.view(v).technique))
+            next.setView(v, {Technique::Pom, info(Technique::Pom).defaults});
+    }
     Changes what;
     if (materialToJson(next.material) != materialToJson(m_state.material))
         what |= MaterialChanged;

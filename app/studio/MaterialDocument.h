@@ -38,7 +38,8 @@ public:
 
     // One undoable edit: `change` turns a copy of the state into the next one. Edits with the
     // same non-empty mergeKey merge into one undo step until endMerge() (a slider drag is one
-    // step). An edit that changes nothing pushes nothing.
+    // step). An edit that changes nothing pushes nothing; one that changes only viewports 2..4's
+    // techniques (view settings) applies at once without an undo step.
     void edit(const QString& text, const std::function<void(DocumentState&)>& change,
               const QString& mergeKey = {});
     void endMerge() { ++m_mergeGeneration; }
@@ -49,8 +50,8 @@ public:
     // history is kept.
     void markSaved(DocumentState saved, const QString& filePath);
 
-    // Used by the undo commands.
-    void setState(const DocumentState& next);
+    // Used by the undo commands: the step's state, with the viewports' techniques as they are.
+    void setState(const DocumentState& stepState);
 
 signals:
     void changed(px::studio::MaterialDocument::Changes what);

@@ -4,12 +4,14 @@
 #include "MapLoading.h"
 #include "MaterialDocument.h"
 #include "SliderField.h"
+#include "parallax/bake/NormalMapBaker.h"
 #include "parallax/material/MaterialNames.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QLineEdit>
 #include <QSignalBlocker>
 #include <QStandardItemModel>
 #include <QVBoxLayout>
@@ -33,6 +35,13 @@ MaterialPanel::MaterialPanel(MaterialDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+
+    m_name = new QLineEdit(this);
+    m_name->setToolTip(tr("The material's name: saved in the file and suggested as its file "
+                          "name."));
+    auto* nameForm = new QFormLayout;
+    nameForm->addRow(tr("Name"), m_name);
+    layout->addLayout(nameForm);
 
     auto* surface = new QGroupBox(tr("Surface"), this);
     auto* surfaceLayout = new QVBoxLayout(surface);
@@ -71,6 +80,10 @@ MaterialPanel::MaterialPanel(MaterialDocument* document, QWidget* parent)
     auto* shadingForm = new QFormLayout;
     m_normalSource = comboOf(normalSourceNames(), hints::normalSource(), this);
     m_normalGreen = comboOf(normalGreenNames(), hints::normalGreen(), this);
+    m_normalGreen->addItem(QStringLiteral("auto"));
+    m_normalGreen->setItemData(m_normalGreen->count() - 1,
+                               tr("Tell the convention from the height map's slopes."),
+                               Qt::ToolTipRole);
     m_lighting = comboOf(lightingModelNames(), hints::lighting(), this);
     shadingForm->addRow(tr("Normals"), m_normalSource);
     shadingForm->addRow(tr("Normal map green"), m_normalGreen);
@@ -141,10 +154,18 @@ MaterialPanel::MaterialPanel(MaterialDocument* document, QWidget* parent)
         });
     });
     connect(m_normalGreen, &QComboBox::currentIndexChanged, this, [this](int i) {
+        if (static_cast<std::size_t>(i) >= normalGreenNames().size())
+            return tellNormalGreen();
         const auto green = parseNormalGreen(normalGreenNames()[static_cast<std::size_t>(i)]);
         m_document->edit(tr("Normal map green"), [green](DocumentState& s) {
             s.material.normalGreen = green.value_or(NormalGreen::OpenGL);
         });
+    });
+    connect(m_name, &QLineEdit::editingFinished, this, [this] {
+        const std::string name = m_name->text().trimmed().toStdString();
+        if (name.empty())
+            return refresh();
+        m_document->edit(tr("Rename"), [name](DocumentState& s) { s.material.name = name; });
     });
     connect(m_lighting, &QComboBox::currentIndexChanged, this, [this](int i) {
         const auto model = parseLightingModel(lightingModelNames()[static_cast<std::size_t>(i)]);
@@ -189,9 +210,34 @@ void MaterialPanel::rereadHeight(const QString& text, bool depth, int channel) {
         emit note(QString::fromStdString(n));
 }
 
+void MaterialPanel::tellNormalGreen() {
+    const DocumentState& s = m_document->state();
+    Result<NormalGreen> green = detectNormalGreen(
+        s.assets->normal, s.assets->height, s.material.wrap,
+        s.material.maps.normal.empty() ? "the normal map" : s.material.maps.normal);
+    if (!green) {
+        refresh();
+        emit problem(QString::fromStdString(green.error().message));
+        return;
+    }
+    const NormalGreen told = *green;
+    m_document->edit(tr("Normal map green"),
+                     [told](DocumentState& next) { next.material.normalGreen = told; });
+    refresh(); // "auto" shows what it found
+    emit note(tr("The normal map's green is %1, told from the height map's slopes.")
+                  .arg(told == NormalGreen::OpenGL ? tr("OpenGL (Y+)") : tr("DirectX (Y-)")));
+}
+
+void MaterialPanel::flipDepth() {
+    if (m_depth->isEnabled())
+        m_depth->toggle();
+}
+
 void MaterialPanel::refresh() {
     const DocumentState& s = m_document->state();
     const Material& m = s.material;
+    if (!m_name->hasFocus())
+        m_name->setText(QString::fromStdString(m.name));
     m_heightScale->setValue(m.heightScale);
     m_tiling->setValue(m.tiling);
     m_softness->setValue(m.shadowSoftness);
@@ -226,6 +272,10 @@ void MaterialPanel::refresh() {
     m_roughness->setVisible(!phong);
     m_metallic->setVisible(!phong);
     m_normalGreen->setEnabled(m.normalSource == NormalSource::Map);
+    if (auto* model = qobject_cast<QStandardItemModel*>(m_normalGreen->model())) {
+        if (QStandardItem* item = model->item(m_normalGreen->count() - 1))
+            item->setEnabled(s.hasMap(MapKind::Normal) && s.hasMap(MapKind::Height));
+    }
     // "map" needs a normal map: load or bake one first.
     if (auto* model = qobject_cast<QStandardItemModel*>(m_normalSource->model())) {
         const int mapIndex = m_normalSource->findText(QStringLiteral("map"));

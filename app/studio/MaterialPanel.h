@@ -1,11 +1,12 @@
 #pragma once
-// The material's own settings (what is saved): height scale and how the height map is read,
-// tiling and wrap, self-shadow, normals and lighting. Every change is an undoable edit.
+// The material's own settings (what is saved): its name, height scale and how the height map is
+// read, tiling and wrap, self-shadow, normals and lighting. Every change is an undoable edit.
 
 #include <QWidget>
 
 class QCheckBox;
 class QComboBox;
+class QLineEdit;
 
 namespace px::studio {
 
@@ -22,6 +23,12 @@ public:
     SliderField* tiling() const { return m_tiling; }
     SliderField* softness() const { return m_softness; }
     QCheckBox* selfShadow() const { return m_shadow; }
+    QCheckBox* depthMap() const { return m_depth; }
+    QComboBox* normalGreen() const { return m_normalGreen; }
+    QLineEdit* nameField() const { return m_name; }
+
+    // Reads the height file the other way (height <-> depth), as the Depth map box does.
+    void flipDepth();
 
 signals:
     void problem(const QString& message); // a file could not be read again
@@ -35,8 +42,11 @@ private:
                     void (*apply)(DocumentState&, double));
     // Invert and channel change how the height file is read: read it again, or refuse.
     void rereadHeight(const QString& text, bool depth, int channel);
+    // "auto" green: the convention the height map's slopes say.
+    void tellNormalGreen();
 
     MaterialDocument* m_document;
+    QLineEdit* m_name;
     SliderField* m_heightScale;
     QCheckBox* m_depth;
     QComboBox* m_channel;

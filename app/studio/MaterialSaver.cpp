@@ -54,7 +54,52 @@ Status writeMap(const MaterialAssets& assets, MapKind kind, const std::string& f
     return success();
 }
 
+// Same pixels: shared memory, or equal texel for texel.
+template <typename T> bool sameData(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.data() == b.data() || a == b;
+}
+
+bool sameMap(const MaterialAssets& a, const MaterialAssets& b, MapKind kind) {
+    switch (kind) {
+    case MapKind::Height:
+        return a.height.width == b.height.width && sameData(a.height.texels, b.height.texels);
+    case MapKind::Albedo:
+        return a.albedo.width == b.albedo.width && sameData(a.albedo.pixels, b.albedo.pixels);
+    case MapKind::Normal:
+        return a.normal.width == b.normal.width && sameData(a.normal.pixels, b.normal.pixels);
+    case MapKind::Cone:
+        return a.cone.width == b.cone.width && sameData(a.cone.sqrtRatio, b.cone.sqrtRatio);
+    case MapKind::RelaxedCone:
+        return a.relaxedCone.width == b.relaxedCone.width &&
+               sameData(a.relaxedCone.sqrtRatio, b.relaxedCone.sqrtRatio);
+    case MapKind::Ao:
+        return a.ao.width == b.ao.width && sameData(a.ao.pixels, b.ao.pixels);
+    case MapKind::Roughness:
+        return a.roughness.width == b.roughness.width &&
+               sameData(a.roughness.pixels, b.roughness.pixels);
+    case MapKind::Metallic:
+        return a.metallic.width == b.metallic.width &&
+               sameData(a.metallic.pixels, b.metallic.pixels);
+    }
+    return false;
+}
+
 } // namespace
+
+void adoptSavedMaps(DocumentState& state, const DocumentState& saved) {
+    for (MapKind kind : kAllMapKinds) {
+        if (!state.isUnsaved(kind) || saved.isUnsaved(kind) || !saved.hasMap(kind) ||
+            mapPath(saved.material.maps, kind).empty() ||
+            !sameMap(*state.assets, *saved.assets, kind))
+            continue;
+        mapPath(state.material.maps, kind) = mapPath(saved.material.maps, kind);
+        state.setUnsaved(kind, false);
+        if (kind == MapKind::Height) {
+            state.material.heightIsDepth = saved.material.heightIsDepth;
+            state.material.heightChannel = saved.material.heightChannel;
+        }
+    }
+}
 
 std::string mapFileFor(const std::string& materialPath, MapKind kind) {
     const fs::path material(materialPath);

@@ -15,6 +15,11 @@ namespace px::studio {
 // G = sqrt(ratio) rounded down (docs/conventions.md §4).
 Result<DocumentState> saveDocumentState(const DocumentState& state, const std::string& path);
 
+// A state from the undo history after a save: each map it holds unsaved that the save wrote (the
+// same data as in `saved`) now has its file, as in `saved`. Undo and redo after a save then never
+// mark saved maps unsaved again.
+void adoptSavedMaps(DocumentState& state, const DocumentState& saved);
+
 // The file an unsaved map is written to for a material saved at `materialPath`.
 std::string mapFileFor(const std::string& materialPath, MapKind kind);
 

@@ -1,6 +1,7 @@
 #include "StateCommand.h"
 
 #include "MaterialDocument.h"
+#include "MaterialSaver.h"
 
 #include <QHash>
 
@@ -18,6 +19,11 @@ void StateCommand::undo() {
 
 void StateCommand::redo() {
     m_document->setState(m_after);
+}
+
+void StateCommand::adoptSavedMaps(const DocumentState& saved) {
+    px::studio::adoptSavedMaps(m_before, saved);
+    px::studio::adoptSavedMaps(m_after, saved);
 }
 
 bool StateCommand::mergeWith(const QUndoCommand* other) {

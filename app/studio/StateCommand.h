@@ -19,6 +19,8 @@ public:
     void redo() override;
     int id() const override { return m_id; }
     bool mergeWith(const QUndoCommand* other) override;
+    // After a save: the maps it wrote have their files in this step's states too.
+    void adoptSavedMaps(const DocumentState& saved);
 
 private:
     MaterialDocument* m_document;

@@ -15,9 +15,14 @@ float wrapDegrees(float a) {
 OrbitCamera orbit(const OrbitCamera& camera, QPointF delta) {
     OrbitCamera c = camera;
     c.azimuthDeg = wrapDegrees(c.azimuthDeg - static_cast<float>(delta.x()) * kDegreesPerPixel);
-    // Stop short of the poles: the up vector would flip.
     c.elevationDeg = std::clamp(c.elevationDeg + static_cast<float>(delta.y()) * kDegreesPerPixel,
-                                -89.0f, 89.0f);
+                                kMinElevation, kMaxElevation);
+    return c;
+}
+
+OrbitCamera withPolarAngle(const OrbitCamera& camera, double polarDeg) {
+    OrbitCamera c = camera;
+    c.elevationDeg = std::clamp(90.0f - static_cast<float>(polarDeg), kMinElevation, kMaxElevation);
     return c;
 }
 

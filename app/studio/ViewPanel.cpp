@@ -2,6 +2,7 @@
 
 #include "Hints.h"
 #include "SliderField.h"
+#include "ViewInteraction.h"
 #include "ViewportGrid.h"
 
 #include <QCheckBox>
@@ -27,6 +28,13 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
     m_elevation->setSuffix(QStringLiteral("°"));
     m_azimuth->setHint(hints::lightAzimuth());
     m_elevation->setHint(hints::lightElevation());
+    m_viewAngle = new SliderField(tr("View angle"),
+                                  {90.0 - kMaxElevation, 90.0 - kMinElevation, 90.0 - kMaxElevation,
+                                   90.0 - kMinElevation, 1, 1.0},
+                                  this);
+    m_viewAngle->setSuffix(QStringLiteral("°"));
+    m_viewAngle->setHint(tr("The camera's angle from the surface normal (0° looks straight down, "
+                            "89° grazes the surface): type an angle to compare views at it."));
     m_mesh = new QComboBox(this);
     for (std::string_view name : meshKindNames())
         m_mesh->addItem(QString::fromUtf8(name.data(), static_cast<int>(name.size())),
@@ -43,6 +51,7 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
     form->addRow(tr("Mesh"), m_mesh);
     layout->addWidget(m_azimuth);
     layout->addWidget(m_elevation);
+    layout->addWidget(m_viewAngle);
     layout->addLayout(form);
     layout->addWidget(m_link);
     layout->addWidget(reset);
@@ -55,6 +64,11 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
     connect(m_elevation, &SliderField::valueEdited, this, [this](double v) {
         SharedView view = m_grid->activeView();
         view.light.elevationDeg = static_cast<float>(v);
+        m_grid->editView(view);
+    });
+    connect(m_viewAngle, &SliderField::valueEdited, this, [this](double v) {
+        SharedView view = m_grid->activeView();
+        view.camera = withPolarAngle(view.camera, v);
         m_grid->editView(view);
     });
     connect(m_mesh, &QComboBox::currentIndexChanged, this, [this](int i) {
@@ -74,6 +88,7 @@ void ViewPanel::refresh() {
     const SharedView& view = m_grid->activeView();
     m_azimuth->setValue(view.light.azimuthDeg);
     m_elevation->setValue(view.light.elevationDeg);
+    m_viewAngle->setValue(90.0 - view.camera.elevationDeg);
     const QSignalBlocker a(m_mesh), b(m_link);
     m_mesh->setCurrentIndex(m_mesh->findData(static_cast<int>(view.mesh)));
     m_link->setChecked(m_grid->linked());

@@ -19,6 +19,7 @@ public:
 
     SliderField* lightAzimuth() const { return m_azimuth; }
     SliderField* lightElevation() const { return m_elevation; }
+    SliderField* viewAngle() const { return m_viewAngle; } // the camera's polar angle
     QComboBox* mesh() const { return m_mesh; }
     QCheckBox* link() const { return m_link; }
 
@@ -28,6 +29,7 @@ private:
     ViewportGrid* m_grid;
     SliderField* m_azimuth;
     SliderField* m_elevation;
+    SliderField* m_viewAngle;
     QComboBox* m_mesh;
     QCheckBox* m_link;
 };

@@ -11,6 +11,10 @@
 
 #define PX_BIG 1.0e30f
 
+// The most cells one exact walk may visit (kMaxStepsLimit): more than the rays of any view the
+// tracers accept cross, so a walk ends at its far end, not at this budget.
+#define PX_WALK_LIMIT 16777216
+
 // Marks values whose every operation both compilers must evaluate as written: GLSL compilers may
 // otherwise reassociate or fuse them (Mesa does), and the CPU and GPU would part ways in the last
 // bits, which iterated refinements amplify. The shader generator defines it as `precise`.
@@ -216,9 +220,19 @@ float pxTraceStraightDown(vec2 uv0) {
 }
 
 // The offset a ray may travel is bounded (docs/techniques.md: never divide by a z that can be 0):
-// grazing views reach the bound instead of infinity, and NaN becomes a straight-down view.
+// grazing views reach the bound instead of infinity, and NaN becomes a straight-down view. The
+// bound is on the length, so the direction (the azimuth) is kept; infinite components give the
+// direction of their signs, at the bound.
 #define PX_MAX_PARALLAX 1.0e4f
 vec2 pxBoundParallax(vec2 P) {
-    return vec2(isnan(P.x) ? 0.0f : clamp(P.x, -PX_MAX_PARALLAX, PX_MAX_PARALLAX),
-                isnan(P.y) ? 0.0f : clamp(P.y, -PX_MAX_PARALLAX, PX_MAX_PARALLAX));
+    vec2 q = vec2(isnan(P.x) ? 0.0f : P.x, isnan(P.y) ? 0.0f : P.y);
+    if (isinf(q.x) || isinf(q.y))
+        q = vec2(isinf(q.x) ? sign(q.x) * PX_MAX_PARALLAX : 0.0f,
+                 isinf(q.y) ? sign(q.y) * PX_MAX_PARALLAX : 0.0f);
+    float big = max(abs(q.x), abs(q.y));
+    if (big <= PX_MAX_PARALLAX * 0.5f)
+        return q; // well inside the bound (and length() cannot overflow)
+    vec2 unit = q / big; // components in [-1, 1]: length() cannot overflow
+    float len = length(unit) * big;
+    return len > PX_MAX_PARALLAX ? unit * (PX_MAX_PARALLAX / length(unit)) : q;
 }

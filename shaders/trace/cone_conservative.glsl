@@ -3,8 +3,8 @@
 // it goes straight through. The cones baked at the four corners of the ray's cell are
 // (docs/conventions.md §4: no point of the bilinear surface inside them), so the ray steps as far
 // as it stays inside any one of them. Where that does not leave the cell, the cell is solved
-// exactly. The hit is therefore the exact one unless the step cap runs out (then the ray stops
-// short).
+// exactly. Where the step cap runs out, the ray is still above the surface: the cell walk finishes
+// it (pxFinishExact), so every ray ends on the exact hit.
 
 struct PxConeCorners {
     vec4 h; // heights h00, h10, h01, h11
@@ -69,5 +69,5 @@ float pxTraceCone(vec2 uv0, vec2 P) {
         if (t >= 1.0f)
             return 1.0f; // f(1) >= 0: the bottom is always solid
     }
-    return t; // the cap ran out: the ray is still above the surface here
+    return pxFinishExact(X0, dXY, t); // the cap ran out above the surface
 }

@@ -1,10 +1,16 @@
 // `relaxed-cone`: relaxed cone stepping (Policarpo & Oliveira, GPU Gems 3 ch. 18). The cone sampled
-// at the ray's position, interpolated between texels, may let the ray enter the solid once; the
-// bracket the last step created holds that single crossing, and pxRefineSteps halvings find it. The
-// step inside a cone is dt = c (z - h) / (c + |P|). Where that would not leave the current cell,
-// the cell is solved exactly instead (docs/cone-maps.md §1, "a minimum step"): zero cones cannot
-// stall the march and features smaller than a cell are not stepped over. (`cone` steps with its
-// corners' cones instead: cone_conservative.glsl.)
+// at the ray's position, interpolated between texels, may let the ray enter the solid. The step
+// inside a cone is dt = c (z - h) / (c + |P|). Where that would not leave the current cell, the
+// cell is solved exactly instead (docs/cone-maps.md §1, "a minimum step"): zero cones cannot stall
+// the march and features smaller than a cell are not stepped over. (`cone` steps with its corners'
+// cones instead: cone_conservative.glsl.)
+//
+// The last step's bracket [tPrev, t] is not refined by halvings: the step may cross several
+// features (a thin wall, then the floor behind it), and halvings keep any crossing, not the
+// first. The bracket's cells are solved exactly instead, and a march whose cap runs out is
+// finished by the cell walk. What remains is a step that passes through a feature and out again
+// before its end (a needle at a grazing view): relaxed cones promise one crossing only for rays
+// through their apex, and the interpolated cone is no cone of the surface.
 
 struct PxConeState {
     float tPrev; // last position known above the surface
@@ -56,7 +62,12 @@ float pxTraceRelaxedCone(vec2 uv0, vec2 P) {
     PxConeState s = pxConeMarch(uv0, P);
     if (s.hit >= 0.0f)
         return s.hit;
-    if (!s.below || s.t <= s.tPrev)
+    vec2 X0 = pxCellCoords(uv0);
+    vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
+    if (!s.below)
+        return pxFinishExact(X0, dXY, s.t); // the cap ran out above the surface
+    if (s.t <= s.tPrev)
         return s.t;
-    return pxBisect(uv0, P, s.tPrev, s.t);
+    vec2 r = pxWalkCells(X0, dXY, s.tPrev, s.t, PX_WALK_LIMIT);
+    return r.x >= 0.0f ? r.x : s.t; // no root: rounding at the sample that found the solid
 }

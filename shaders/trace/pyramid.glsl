@@ -44,6 +44,15 @@ int pxCellInSpan(float X, float dX, vec2 span) {
     return int(clamp(float(pxCellAlong(X, dX)), span.x, span.y - 1.0f));
 }
 
+// Where the ray entered `cell` (or started), computed as the cell walk of `exact` computes it:
+// solving the cell's quadratic from the same start rounds the same way, so a ray that grazes
+// the surface within float rounding gets the reference's answer, not a coin toss of its own.
+float pxCellEntry(ivec2 cell, vec2 X0, vec2 dXY) {
+    float ex = dXY.x == 0.0f ? 0.0f : pxBorderT(cell.x - (dXY.x > 0.0f ? 1 : -1), X0.x, dXY.x);
+    float ey = dXY.y == 0.0f ? 0.0f : pxBorderT(cell.y - (dXY.y > 0.0f ? 1 : -1), X0.y, dXY.y);
+    return max(pxStartT(), max(ex, ey));
+}
+
 float pxTracePyramid(vec2 uv0, vec2 P) {
     vec2 X0 = pxCellCoords(uv0);
     vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
@@ -72,7 +81,9 @@ float pxTracePyramid(vec2 uv0, vec2 P) {
                 level -= 1;
                 continue;
             }
-            float root = pxSolveCell(cell, X0, dXY, t, min(tExit, 1.0f));
+            // The box test has shown the ray above the cell before t: no root is lost.
+            float ta = min(t, pxCellEntry(cell, X0, dXY));
+            float root = pxSolveCell(cell, X0, dXY, ta, min(tExit, 1.0f));
             if (root >= 0.0f)
                 return root;
         }
@@ -93,5 +104,5 @@ float pxTracePyramid(vec2 uv0, vec2 P) {
         if (before != after)
             level = min(level + 1, pxMaxMipTop);
     }
-    return t; // the cap ran out: the ray is still above the surface here
+    return pxFinishExact(X0, dXY, t); // the cap ran out above the surface
 }

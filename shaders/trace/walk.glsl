@@ -26,3 +26,14 @@ vec2 pxWalkCells(vec2 X0, vec2 dXY, float ta, float tb, int budget) {
     }
     return vec2(-1.0f, t);
 }
+
+// The exact finisher of the capped marches (`cone`, `relaxed-cone`, `pyramid`): from a t where
+// the ray is known to be above the surface, walk every remaining cell. A march whose step cap
+// runs out therefore still ends on the exact hit, paying for the walk only on the rays where the
+// cap binds.
+float pxFinishExact(vec2 X0, vec2 dXY, float t) {
+    vec2 r = pxWalkCells(X0, dXY, t, 1.0f, PX_WALK_LIMIT);
+    if (r.x >= 0.0f)
+        return r.x;
+    return r.y >= 1.0f ? 1.0f : r.y;
+}

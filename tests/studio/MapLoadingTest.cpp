@@ -203,13 +203,14 @@ private slots:
         writeGrey(dir, "rock_disp.png", 8, 8, 0.5f);
         writeGrey(dir, "rock_color.png", 8, 8, 0.7f);
         writeGrey(dir, "notes.png", 8, 8, 0.1f);
-        const Result<FoundMaps> found = findMapsInFolder(dir.path().toStdString());
+        const Result<TextureSetPlan> found =
+            planTextureSet(*folderFiles(dir.path().toStdString()), "dir");
         QVERIFY(found);
-        QCOMPARE(found->maps.size(), std::size_t(2));
-        QCOMPARE(int(found->maps.front().kind), int(MapKind::Height));
-        QCOMPARE(found->unmatched.size(), std::size_t(1));
+        QCOMPARE(found->assigned.size(), std::size_t(2));
+        QCOMPARE(int(found->assigned.front().kind), int(MapKind::Height));
+        QCOMPARE(found->ignored.size(), std::size_t(1));
         const Result<Loaded> loaded =
-            loadMaps(makeSampleState(ProceduralMap::Bricks, 16), found->maps);
+            loadMaps(makeSampleState(ProceduralMap::Bricks, 16), found->assigned);
         QVERIFY(loaded);
         QCOMPARE(loaded->state.assets->height.width, 8);
         QCOMPARE(loaded->state.assets->albedo.width, 8);
@@ -220,10 +221,11 @@ private slots:
         QTemporaryDir dir;
         writeGrey(dir, "rock_height.png", 8, 8, 0.5f);
         QVERIFY(writeTextFile(dir.filePath("rock_normal.png").toStdString(), "garbage"));
-        const Result<FoundMaps> found = findMapsInFolder(dir.path().toStdString());
+        const Result<TextureSetPlan> found =
+            planTextureSet(*folderFiles(dir.path().toStdString()), "dir");
         QVERIFY(found);
         const Result<Loaded> loaded =
-            loadMaps(makeSampleState(ProceduralMap::Bricks, 16), found->maps);
+            loadMaps(makeSampleState(ProceduralMap::Bricks, 16), found->assigned);
         QVERIFY(!loaded);
         QVERIFY(loaded.error().message.find("rock_normal.png") != std::string::npos);
     }

@@ -57,11 +57,13 @@ private slots:
         doc.reset(makeSampleState(ProceduralMap::Bricks, 32), {});
         QSignalSpy dirty(&doc, &MaterialDocument::dirtyChanged);
         QVERIFY(!doc.isDirty());
-        // Another viewport's technique is a view setting: undoable, not a change to the file.
+        // Another viewport's technique is a view setting: not a change to the file, not history.
         doc.edit("Viewport 3", [](DocumentState& s) {
             s.setView(2, {Technique::Steep, info(Technique::Steep).defaults});
         });
         QVERIFY(!doc.isDirty());
+        QCOMPARE(doc.undoStack()->count(), 0);
+        QCOMPARE(doc.state().view(2).technique, Technique::Steep);
         doc.edit("Shadow",
                  [](DocumentState& s) { s.material.selfShadow = !s.material.selfShadow; });
         QVERIFY(doc.isDirty());
@@ -69,6 +71,7 @@ private slots:
         doc.undoStack()->undo();
         QVERIFY(!doc.isDirty());
         QCOMPARE(dirty.count(), 2);
+        QCOMPARE(doc.state().view(2).technique, Technique::Steep); // undo leaves views alone
     }
 
     void viewportOneIsTheMaterialsTechnique() {

@@ -10,13 +10,32 @@
 
 namespace px {
 
+// What happened: callers branch on the kind, never on the text (a message that gains a prefix
+// on its way up must not turn a cancel into an error dialog).
+enum class ErrorKind {
+    Failed,    // the operation could not be done; the message says why
+    Cancelled, // the user stopped it (Cancel, Ctrl-C); nothing was produced
+};
+
 struct Error {
+    Error() = default;
+    explicit Error(std::string text, ErrorKind what = ErrorKind::Failed, std::string about = {})
+        : message(std::move(text)), kind(what), file(std::move(about)) {}
+
     std::string message; // one sentence, naming the file and the problem where there is one
+    ErrorKind kind = ErrorKind::Failed;
+    std::string file; // the file it concerns, as the user named it; empty if none
+
+    bool cancelled() const { return kind == ErrorKind::Cancelled; }
+    // The same kind and file with more context in front: "pom: " + message.
+    Error prefixed(const std::string& context) const {
+        return Error{context + message, kind, file};
+    }
 };
 
 // Formats "FILE: problem" so every message names its file the same way.
 inline Error fileError(const std::string& file, const std::string& problem) {
-    return Error{file + ": " + problem};
+    return Error{file + ": " + problem, ErrorKind::Failed, file};
 }
 
 template <typename T> class [[nodiscard]] Result {

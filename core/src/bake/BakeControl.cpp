@@ -11,11 +11,11 @@ constexpr const char* kCancelled = "the bake was cancelled";
 }
 
 Error cancelledError() {
-    return Error{kCancelled};
+    return Error{kCancelled, ErrorKind::Cancelled, {}};
 }
 
 bool isCancelled(const Error& error) {
-    return error.message == kCancelled;
+    return error.cancelled();
 }
 
 BakeProgress::BakeProgress(const BakeControl& control, std::int64_t totalWork)

@@ -6,7 +6,7 @@
 namespace px::cone {
 
 CellPyramid::CellPyramid(const CellGrid& grid) {
-    Level base;
+    MaxLevel base;
     base.width = grid.cellsX;
     base.height = grid.cellsY;
     base.values.resize(static_cast<std::size_t>(base.width) * base.height);
@@ -18,31 +18,7 @@ CellPyramid::CellPyramid(const CellGrid& grid) {
                                       cellCorners(grid, x, y).max();
                           }
                       });
-    m_levels.push_back(std::move(base));
-    while (m_levels.back().width > 1 || m_levels.back().height > 1) {
-        const Level& child = m_levels.back();
-        Level parent;
-        parent.width = (child.width + 1) / 2;
-        parent.height = (child.height + 1) / 2;
-        parent.values.resize(static_cast<std::size_t>(parent.width) * parent.height);
-        for (int y = 0; y < parent.height; ++y) {
-            for (int x = 0; x < parent.width; ++x) {
-                float m = child.values[static_cast<std::size_t>(2 * y) * child.width + 2 * x];
-                const bool right = 2 * x + 1 < child.width, down = 2 * y + 1 < child.height;
-                if (right)
-                    m = std::max(
-                        m, child.values[static_cast<std::size_t>(2 * y) * child.width + 2 * x + 1]);
-                if (down)
-                    m = std::max(
-                        m, child.values[static_cast<std::size_t>(2 * y + 1) * child.width + 2 * x]);
-                if (right && down)
-                    m = std::max(m, child.values[static_cast<std::size_t>(2 * y + 1) * child.width +
-                                                 2 * x + 1]);
-                parent.values[static_cast<std::size_t>(y) * parent.width + x] = m;
-            }
-        }
-        m_levels.push_back(std::move(parent));
-    }
+    m_levels = maxPyramid(std::move(base));
 }
 
 } // namespace px::cone

@@ -1,9 +1,10 @@
 #pragma once
 // A maximum pyramid over the cells of CellGrid (not MaxMipPyramid, whose clamp layout adds the
-// border strips): level 0 holds each cell's corner maximum, level L+1 the maximum of up to four
-// children, sizes rounded up.
+// border strips): level 0 holds each cell's corner maximum, the levels above as maxPyramid builds
+// them.
 
 #include "bake/ConeCells.h"
+#include "parallax/bake/MaxLevel.h"
 
 #include <cstddef>
 #include <vector>
@@ -17,17 +18,10 @@ public:
     int levels() const { return static_cast<int>(m_levels.size()); }
     int width(int level) const { return m_levels[level].width; }
     int height(int level) const { return m_levels[level].height; }
-    float at(int level, int x, int y) const {
-        const Level& l = m_levels[level];
-        return l.values[static_cast<std::size_t>(y) * l.width + x];
-    }
+    float at(int level, int x, int y) const { return m_levels[level].at(x, y); }
 
 private:
-    struct Level {
-        int width = 0, height = 0;
-        std::vector<float> values;
-    };
-    std::vector<Level> m_levels;
+    std::vector<MaxLevel> m_levels;
 };
 
 // Floor division and the cell range of extended node e at a level with `nodes` nodes over

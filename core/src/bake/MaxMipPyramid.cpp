@@ -12,7 +12,7 @@ MaxMipPyramid MaxMipPyramid::build(const HeightField& field, WrapMode wrap) {
 
     // Clamp adds the two half-texel border strips: stored index s is cell s - 1.
     const int offset = wrap == WrapMode::Clamp ? 1 : 0;
-    Level base;
+    MaxLevel base;
     base.width = field.width + offset;
     base.height = field.height + offset;
     base.values.resize(static_cast<std::size_t>(base.width) * base.height);
@@ -26,36 +26,12 @@ MaxMipPyramid MaxMipPyramid::build(const HeightField& field, WrapMode wrap) {
                 std::max({field.at(x0, y0), field.at(x1, y0), field.at(x0, y1), field.at(x1, y1)});
         }
     }
-    pyramid.m_levels.push_back(std::move(base));
-
-    while (pyramid.m_levels.back().width > 1 || pyramid.m_levels.back().height > 1) {
-        const Level& child = pyramid.m_levels.back();
-        Level parent;
-        parent.width = (child.width + 1) / 2;
-        parent.height = (child.height + 1) / 2;
-        parent.values.resize(static_cast<std::size_t>(parent.width) * parent.height);
-        for (int y = 0; y < parent.height; ++y) {
-            for (int x = 0; x < parent.width; ++x) {
-                float m = 0.0f;
-                for (int dy = 0; dy < 2; ++dy) {
-                    for (int dx = 0; dx < 2; ++dx) {
-                        const int cx = 2 * x + dx;
-                        const int cy = 2 * y + dy;
-                        if (cx < child.width && cy < child.height)
-                            m = std::max(
-                                m, child.values[static_cast<std::size_t>(cy) * child.width + cx]);
-                    }
-                }
-                parent.values[static_cast<std::size_t>(y) * parent.width + x] = m;
-            }
-        }
-        pyramid.m_levels.push_back(std::move(parent));
-    }
+    pyramid.m_levels = maxPyramid(std::move(base));
     return pyramid;
 }
 
 Image MaxMipPyramid::levelImage(int level) const {
-    const Level& l = m_levels[level];
+    const MaxLevel& l = m_levels[level];
     Image image(l.width, l.height, 1);
     image.pixels = l.values;
     return image;

@@ -2,6 +2,7 @@
 target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/BakeControl.cpp
   ${CMAKE_CURRENT_LIST_DIR}/BakeEncoding.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/MaxLevel.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MaxMipPyramid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ConeCells.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CellPyramid.cpp

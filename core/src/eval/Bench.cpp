@@ -269,7 +269,7 @@ Status validate(const BenchConfig& c) {
             return Error{std::string(info(s.technique).name) +
                          " traces no rays: nothing to measure"};
         if (Status v = validate(s.params); !v)
-            return Error{std::string(info(s.technique).name) + ": " + v.error().message};
+            return v.error().prefixed(std::string(info(s.technique).name) + ": ");
     }
     if (c.polarDeg.empty())
         return Error{"the benchmark needs at least one polar angle"};
@@ -300,6 +300,27 @@ Status validate(const BenchConfig& c) {
 
 Result<BenchReport> runBench(const BenchConfig& config, const EvalControl& control) {
     return BenchRun(config, control).run();
+}
+
+std::vector<std::string> exactnessFailures(const BenchReport& report) {
+    std::vector<std::string> failures;
+    auto check = [&](const BenchRow& row) {
+        if (!isDocumentedExact(row.setting.technique) || row.stats.maxError <= kExactTexels)
+            return;
+        char text[96];
+        std::snprintf(text, sizeof text, " at %g deg: a ray %.3g texels from exact (> %g)",
+                      row.polarDeg, row.stats.maxError, kExactTexels);
+        std::string where = row.pooled ? "every map and scale" : row.map;
+        if (row.scale)
+            where += ", scale " + formatAngle(*row.scale);
+        failures.push_back(std::string(info(row.setting.technique).name) + " (" +
+                           row.setting.label + "), " + where + text);
+    };
+    for (const BenchRow& row : report.rows)
+        check(row);
+    for (const BenchRow& row : report.pooled)
+        check(row);
+    return failures;
 }
 
 } // namespace px

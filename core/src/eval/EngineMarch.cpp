@@ -1,6 +1,7 @@
 #include "parallax/eval/EngineMarch.h"
 
 #include "ProbeRun.h"
+#include "trace/TraceKernel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,13 +27,12 @@ Probe godotProbe(const EngineLayers& layers, const HeightField& field, WrapMode 
         return RangeTrace([layers, &field, wrap, scale](const RaySample& rays, std::size_t begin,
                                                         std::size_t end,
                                                         std::span<TraceResult> hits) {
-            Sampler heights(field, wrap); // one per range: a Sampler counts its own fetches
             const float sinPolar =
                 static_cast<float>(std::sin(rays.polarDeg * std::numbers::pi / 180.0));
             const float cosPolar = std::sqrt(std::max(0.0f, 1.0f - sinPolar * sinPolar));
             (void)scale;
             for (std::size_t k = begin; k < end; ++k)
-                hits[k] = godotDeepParallax(heights, rays.uv0[k], rays.P[k], cosPolar, layers);
+                hits[k] = godotDeepParallax(field, wrap, rays.uv0[k], rays.P[k], cosPolar, layers);
         });
     };
     return probe;
@@ -57,29 +57,33 @@ glm::vec2 godotParallaxVector(float scale, double polarDeg, double azimuthDeg) {
             static_cast<float>(len * std::sin(azimuthDeg * r))};
 }
 
-TraceResult godotDeepParallax(Sampler& heights, glm::dvec2 uv0, glm::vec2 P, float cosPolar,
-                              const EngineLayers& layers) {
-    const long long before = heights.fetches();
+TraceResult godotDeepParallax(const HeightField& field, WrapMode wrap, glm::dvec2 uv0, glm::vec2 P,
+                              float cosPolar, const EngineLayers& layers) {
+    // The kernels' own bilinear sampling (shaders/trace/common.glsl), which counts the fetches.
+    kernel::TraceKernel heights;
+    heights.pxMapSize = glm::ivec2(field.width, field.height);
+    heights.pxWrapRepeat = wrap == WrapMode::Repeat;
+    heights.heightField = &field;
+    auto sample = [&](glm::vec2 uv) { return heights.pxHeight(uv); };
     const float numLayers = godotLayerCount(layers, cosPolar);
     const float layerDepth = 1.0f / numLayers;
     const glm::vec2 delta = P / numLayers;
     // The march runs in the tile's own coordinates, as a shader's uv would (float).
     const glm::vec2 base(static_cast<float>(uv0.x), static_cast<float>(uv0.y));
     glm::vec2 ofs = base;
-    float depth = 1.0f - heights.sample(ofs.x, ofs.y);
+    float depth = 1.0f - sample(ofs);
     float currentDepth = 0.0f;
     // Godot's loop ends once the layer depth passes the surface (at most ~num_layers + 1 steps;
     // the cap only guards against NaN heights).
     const int cap = static_cast<int>(numLayers) + 2;
     for (int k = 0; currentDepth < depth && k < cap; ++k) {
         ofs += delta; // Godot subtracts view.xy: along the ray
-        depth = 1.0f - heights.sample(ofs.x, ofs.y);
+        depth = 1.0f - sample(ofs);
         currentDepth += layerDepth;
     }
     const glm::vec2 prevOfs = ofs - delta;
     const float afterDepth = depth - currentDepth;
-    const float beforeDepth =
-        (1.0f - heights.sample(prevOfs.x, prevOfs.y)) - currentDepth + layerDepth;
+    const float beforeDepth = (1.0f - sample(prevOfs)) - currentDepth + layerDepth;
     const float weight = afterDepth / (afterDepth - beforeDepth);
     ofs = ofs * (1.0f - weight) + prevOfs * weight;
 
@@ -90,7 +94,7 @@ TraceResult godotDeepParallax(Sampler& heights, glm::dvec2 uv0, glm::vec2 P, flo
     const glm::vec2 d = ofs - base;
     r.t = len2 > 0.0f ? std::clamp((d.x * P.x + d.y * P.y) / len2, 0.0f, 1.0f)
                       : std::clamp(currentDepth, 0.0f, 1.0f);
-    r.fetches = static_cast<int>(heights.fetches() - before);
+    r.fetches = heights.pxFetches;
     return r;
 }
 

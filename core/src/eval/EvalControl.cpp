@@ -6,11 +6,11 @@ constexpr const char* kCancelled = "the evaluation was cancelled";
 }
 
 Error evaluationCancelled() {
-    return Error{kCancelled};
+    return Error{kCancelled, ErrorKind::Cancelled, {}};
 }
 
 bool isEvaluationCancelled(const Error& error) {
-    return error.message == kCancelled;
+    return error.cancelled();
 }
 
 } // namespace px

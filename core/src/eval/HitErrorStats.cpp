@@ -17,6 +17,11 @@ bool isValid(const TraceResult& r) {
 
 } // namespace
 
+bool isDocumentedExact(Technique technique) {
+    return technique == Technique::Cone || technique == Technique::Pyramid ||
+           technique == Technique::Exact;
+}
+
 double nearestRankPercentile(std::vector<double>& values, double q) {
     if (values.empty())
         return 0.0;
@@ -41,6 +46,14 @@ void HitErrorAccumulator::add(std::span<const TraceResult> hits,
         }
         m_errors.push_back(hitErrorTexels(hits[k], reference[k], width, height));
     }
+}
+
+void HitErrorAccumulator::addError(double errorTexels, int fetches) {
+    m_fetches.push_back(fetches);
+    if (std::isfinite(errorTexels))
+        m_errors.push_back(errorTexels);
+    else
+        ++m_invalid;
 }
 
 HitErrorStats HitErrorAccumulator::stats() const {

@@ -118,9 +118,20 @@ Result<std::vector<BenchSetting>> parseSweep(std::string_view spec) {
                        : parameter == "secant-steps" ? ti.usesSecantSteps
                        : parameter == "max-steps"    ? ti.usesMaxSteps
                                                      : false;
-    if (!reads)
-        return Error{name + " has no parameter '" + parameter +
-                     "' (layers, binary-steps, secant-steps, max-steps: those it reads)"};
+    if (!reads) {
+        // Name only the parameters this technique reads, so the list is the way out.
+        std::string known;
+        for (const auto& [flag, parameterName] :
+             {std::pair{ti.usesLayers, "layers"}, std::pair{ti.usesBinarySteps, "binary-steps"},
+              std::pair{ti.usesSecantSteps, "secant-steps"},
+              std::pair{ti.usesMaxSteps, "max-steps"}}) {
+            if (flag)
+                known += (known.empty() ? "" : ", ") + std::string(parameterName);
+        }
+        return Error{
+            name + " has no parameter '" + parameter + "'" +
+            (known.empty() ? std::string(": it reads none") : " (it reads " + known + ")")};
+    }
     std::vector<BenchSetting> sweep;
     std::string_view values = spec.substr(equals + 1);
     std::size_t start = 0;
@@ -145,7 +156,7 @@ Result<std::vector<BenchSetting>> parseSweep(std::string_view spec) {
                                            : p.maxSteps) = a;
         }
         if (Status v = validate(p); !v)
-            return Error{name + ": " + v.error().message};
+            return v.error().prefixed(name + ": ");
         sweep.push_back({*technique, p, settingLabel(*technique, p), sameParams(p, ti.defaults)});
     }
     return sweep;

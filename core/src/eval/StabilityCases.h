@@ -7,6 +7,7 @@
 #include "parallax/sample/ProceduralMaps.h"
 
 #include <glm/vec2.hpp>
+#include <vector>
 
 namespace px::stability {
 
@@ -21,6 +22,12 @@ enum class Special {
     ZeroCones,     // cone maps of zeros: the cone marches must fall back to cell steps
     ForeignCones,  // cone maps baked from another height map
     NanInFloatMap, // a float file with a NaN texel must be rejected by the loader
+};
+
+// One view of a case's rays: polar and azimuth angles, degrees.
+struct View {
+    double polarDeg = 60.0;
+    double azimuthDeg = 35.0;
 };
 
 struct CaseSpec {
@@ -40,7 +47,13 @@ struct CaseSpec {
     double featureTexels = 1.0;
     Special special = Special::None;
     glm::dvec2 uvOffset{0.0, 0.0};
+    // More views whose rays are pooled into the case's rows (the adversarial maps); empty: the
+    // one view above.
+    std::vector<View> views;
 };
+
+// The views a case traces: its `views`, or its one polar and azimuth.
+std::vector<View> caseViews(const CaseSpec& spec);
 
 std::span<const CaseSpec> caseSpecs();
 

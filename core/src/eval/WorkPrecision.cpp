@@ -98,12 +98,15 @@ WorkPrecisionChart makeWorkPrecisionChart(const BenchReport& report, double erro
                 point.cost = *cost;
                 point.error = row.stats.p99Error;
                 point.plotError = std::max(point.error, errorFloor);
+                point.maxError = row.stats.maxError;
+                point.plotMaxError = std::max(point.maxError, errorFloor);
+                point.wrongSurface = row.stats.wrongSurface;
                 point.row = i;
                 point.setting = row.setting;
                 series->points.push_back(point);
                 costLo = std::min(costLo, *cost);
                 costHi = std::max(costHi, *cost);
-                errorHi = std::max(errorHi, point.plotError);
+                errorHi = std::max({errorHi, point.plotError, point.plotMaxError});
             }
             if (costHi > 0.0)
                 panel.costRange = enclosingDecades(costLo, costHi);
@@ -114,26 +117,6 @@ WorkPrecisionChart makeWorkPrecisionChart(const BenchReport& report, double erro
         }
     }
     return chart;
-}
-
-std::optional<PointRef> pickPoint(const WorkPrecisionPanel& panel, double cost, double error,
-                                  double maxDecades) {
-    if (!(cost > 0.0) || !(error > 0.0))
-        return std::nullopt;
-    std::optional<PointRef> best;
-    double bestDistance = maxDecades;
-    for (std::size_t s = 0; s < panel.series.size(); ++s) {
-        for (std::size_t p = 0; p < panel.series[s].points.size(); ++p) {
-            const WorkPrecisionPoint& point = panel.series[s].points[p];
-            const double d =
-                std::hypot(std::log10(point.cost / cost), std::log10(point.plotError / error));
-            if (d <= bestDistance) {
-                bestDistance = d;
-                best = PointRef{s, p};
-            }
-        }
-    }
-    return best;
 }
 
 } // namespace px

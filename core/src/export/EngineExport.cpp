@@ -4,6 +4,7 @@
 
 #include "ExportJob.h"
 #include "ExportTextures.h"
+#include "io/ShortestDecimal.h"
 
 #include <sstream>
 
@@ -11,18 +12,24 @@ namespace px::exporter {
 
 namespace {
 
-// The parallax part of the notes: what the material asks for in the engine's terms.
-void parallaxLines(std::ostringstream& note, const Material& m, const char* scaleName,
-                   const char* minName, const char* maxName) {
+// The layer counts in the engine's terms (a technique without layers gets the march defaults).
+void stepLines(std::ostringstream& note, const Material& m, const char* minName,
+               const char* maxName) {
     const TechniqueInfo& t = info(m.technique);
     const TraceParams layers = t.usesLayers ? m.params : info(Technique::Pom).defaults;
-    note << "  " << scaleName << " = " << decimal(m.heightScale)
-         << "   (the relief's depth in uv units: h = 0 lies this far below the surface)\n"
-         << "  " << minName << " = " << layers.minLayers << ", " << maxName << " = "
+    note << "  " << minName << " = " << layers.minLayers << ", " << maxName << " = "
          << layers.maxLayers << "\n";
     if (!t.usesLayers)
         note << "  (the material uses '" << t.name
              << "', which the engine does not have: these are the layer-march defaults)\n";
+}
+
+// The parallax part of the notes: what the material asks for in the engine's terms.
+void parallaxLines(std::ostringstream& note, const Material& m, const char* scaleName,
+                   const char* minName, const char* maxName) {
+    note << "  " << scaleName << " = " << shortestDecimal(m.heightScale)
+         << "   (the relief's depth in uv units: h = 0 lies this far below the surface)\n";
+    stepLines(note, m, minName, maxName);
 }
 
 const char* wrapText(const Material& m) {
@@ -69,13 +76,17 @@ Status writeUnreal(ExportJob& job) {
     note << "\nMaterial graph:\n";
     if (parallax) {
         note << "  Add the ParallaxOcclusionMapping function; Heightmap Texture = " << base
-             << "_H, Heightmap Channel = (1, 0, 0, 0), UVs = TexCoord[0] * " << decimal(m.tiling)
+             << "_H, Heightmap Channel = (1, 0, 0, 0), UVs = TexCoord[0] * "
+             << shortestDecimal(m.tiling)
              << ",\n  Reference Plane so that white lies on the surface (the relief is carved "
                 "into the polygon), and\n";
         parallaxLines(note, m, "Height Ratio", "Min Steps", "Max Steps");
         note << "  Feed its Parallax UVs to every texture sample below.\n";
+        if (m.selfShadow)
+            note << "  Self-shadowing (on in the material) is not set up: the function's Shadow "
+                    "output, with the light vector in tangent space, is where Unreal has it.\n";
     } else {
-        note << "  UVs = TexCoord[0] * " << decimal(m.tiling) << " (no parallax: technique "
+        note << "  UVs = TexCoord[0] * " << shortestDecimal(m.tiling) << " (no parallax: technique "
              << info(m.technique).name << ").\n";
     }
     if (!job.assets.albedo.empty())
@@ -85,8 +96,8 @@ Status writeUnreal(ExportJob& job) {
     if (job.orm())
         note << "  Ambient Occlusion <- " << base << "_ORM R, Roughness <- G, Metallic <- B\n";
     else
-        note << "  Roughness = " << decimal(m.roughness) << ", Metallic = " << decimal(m.metallic)
-             << "\n";
+        note << "  Roughness = " << shortestDecimal(m.roughness)
+             << ", Metallic = " << shortestDecimal(m.metallic) << "\n";
     return job.text(job.stem + "_Unreal.txt", note.str());
 }
 
@@ -152,20 +163,28 @@ Status writeUnity(ExportJob& job) {
              << "              sRGB off, white = high\n";
     }
     note << "\nEvery texture: Wrap Mode = " << (m.wrap == WrapMode::Repeat ? "Repeat" : "Clamp")
-         << ". Material Tiling = (" << decimal(m.tiling) << ", " << decimal(m.tiling) << ").\n";
+         << ". Material Tiling = (" << shortestDecimal(m.tiling) << ", "
+         << shortestDecimal(m.tiling) << ").\n";
     if (!packed)
-        note << "Metallic = " << decimal(m.metallic)
-             << ", Smoothness = " << decimal(1.0f - m.roughness) << "\n";
+        note << "Metallic = " << shortestDecimal(m.metallic)
+             << ", Smoothness = " << shortestDecimal(1.0f - m.roughness) << "\n";
     if (parallax) {
         note << "\nHDRP Lit (parallax occlusion): Displacement Mode = Pixel displacement, Height "
                 "Map = "
              << job.heightName(base + "_Height")
-             << ", Parametrization = Amplitude,\n  Amplitude = " << decimal(m.heightScale)
-             << " x the tile's size in centimetres (" << decimal(m.heightScale * 100.0f)
-             << " cm for a 1 m tile), Base = 1 (white lies on the surface),\n";
-        parallaxLines(note, m, "(height scale)", "Minimum Steps", "Maximum Steps");
+             << ", Parametrization = Amplitude,\n  Amplitude = " << shortestDecimal(m.heightScale)
+             << " x the tile's size in centimetres (" << shortestDecimal(m.heightScale * 100.0f)
+             << " cm for a 1 m tile), Base = 1 (white lies on the surface),\n"
+             << "  Primitive Length = Primitive Width = the tile's size in metres (1 for a 1 m "
+                "tile), Lock with height map tiling rate on:\n  HDRP divides the Amplitude by "
+                "the primitive size to get the depth in uv units, so both must match the mesh,\n";
+        stepLines(note, m, "Minimum Steps", "Maximum Steps");
+        if (m.selfShadow)
+            note << "  Self-shadowing (on in the material) is not exported: HDRP's pixel "
+                    "displacement has no self-shadow term (Depth Offset only moves depth).\n";
         note << "Built-in Standard / URP Lit (offset parallax only): Height Map = "
-             << job.heightName(base + "_Height") << ", Height Scale = " << decimal(m.heightScale);
+             << job.heightName(base + "_Height")
+             << ", Height Scale = " << shortestDecimal(m.heightScale);
         if (m.heightScale < 0.005f || m.heightScale > 0.08f)
             note << " (outside Unity's 0.005 to 0.08 slider: type it in, or expect a different "
                     "depth)";

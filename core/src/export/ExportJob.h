@@ -47,9 +47,8 @@ struct ExportJob {
     ConeMap cones(ConeKind kind);
 };
 
-// The float as the shortest decimal that reads back to it (0.6f prints "0.6", not 0.60000002).
-double decimal(float value);
-std::string formatDecimal(float value); // "0.05"
+// The float as the shortest decimal that reads back to it (io/ShortestDecimal.h), as text: "0.05".
+std::string formatDecimal(float value);
 
 // A file name stem from a material name: letters, digits, '-' and '_' kept, the rest '_'.
 std::string fileStem(const std::string& name);

@@ -5,6 +5,7 @@
 
 #include "ExportJob.h"
 #include "ExportTextures.h"
+#include "io/ShortestDecimal.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/NormalMapBaker.h"
 #include "parallax/eval/AutoTechnique.h"
@@ -12,7 +13,6 @@
 #include "parallax/material/MaterialFile.h"
 
 #include <cstdio>
-#include <cstdlib>
 
 namespace px {
 
@@ -28,19 +28,9 @@ std::string fileStem(const std::string& name) {
     return stem.empty() ? "material" : stem;
 }
 
-double decimal(float value) {
-    char buffer[32];
-    for (int precision = 6; precision <= 9; ++precision) {
-        std::snprintf(buffer, sizeof buffer, "%.*g", precision, static_cast<double>(value));
-        if (std::strtof(buffer, nullptr) == value)
-            break;
-    }
-    return std::strtod(buffer, nullptr);
-}
-
 std::string formatDecimal(float value) {
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", decimal(value));
+    std::snprintf(buffer, sizeof buffer, "%g", shortestDecimal(value));
     return buffer;
 }
 
@@ -49,15 +39,16 @@ Status ExportJob::image(const std::string& name, const Image& pixels, PixelForma
     ImageWriteOptions write;
     write.format = format;
     write.srgb = srgb;
-    if (Status s = writeImage(folder.pathFor(name), pixels, write); !s)
-        return s;
+    const std::string staged = folder.pathFor(name);
+    if (Status s = writeImage(staged, pixels, write); !s)
+        return folder.asTarget(s.error());
     folder.add(name);
     return success();
 }
 
 Status ExportJob::text(const std::string& name, std::string_view contents) {
     if (Status s = writeTextFile(folder.pathFor(name), contents); !s)
-        return s;
+        return folder.asTarget(s.error());
     folder.add(name);
     return success();
 }
@@ -187,12 +178,13 @@ Result<ExportResult> exportMaterial(const Material& material, const std::string&
     }
     if (!written)
         return written.error(); // the staging folder goes with `folder`
-    Result<std::vector<std::string>> files = folder->commit(
+    Result<ExportFolder::Committed> committed = folder->commit(
         "export --format " + std::string(toString(options.format)) + " of " + material.name);
-    if (!files)
-        return files.error();
+    if (!committed)
+        return committed.error();
     result.folder = folder->target().string();
-    result.files = std::move(*files);
+    result.files = std::move(committed->files);
+    result.kept = std::move(committed->kept);
     return result;
 }
 

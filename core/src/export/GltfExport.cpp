@@ -4,6 +4,7 @@
 
 #include "ExportJob.h"
 #include "ExportTextures.h"
+#include "io/ShortestDecimal.h"
 #include "parallax/Version.h"
 #include "parallax/material/MaterialFile.h"
 
@@ -101,8 +102,8 @@ Status writeGltf(ExportJob& job) {
         pbr["baseColorTexture"] = texture(name);
     }
     const std::optional<Image> orm = job.orm();
-    pbr["metallicFactor"] = orm ? 1.0 : decimal(m.metallic);
-    pbr["roughnessFactor"] = orm ? 1.0 : decimal(m.roughness);
+    pbr["metallicFactor"] = orm ? 1.0 : shortestDecimal(m.metallic);
+    pbr["roughnessFactor"] = orm ? 1.0 : shortestDecimal(m.roughness);
     if (orm) {
         const std::string name = job.stem + "_orm.png";
         if (Status s = job.image(name, *orm, PixelFormat::UInt8); !s)
@@ -138,6 +139,22 @@ Status writeGltf(ExportJob& job) {
     }
     extras.maps.albedo = pbr.contains("baseColorTexture") ? job.stem + "_basecolor.png" : "";
     extras.maps.normal = material.contains("normalTexture") ? job.stem + "_normal.png" : "";
+    // The material's own occlusion, roughness and metallic maps, one file each as the material
+    // reads them (the packed ORM is glTF's): without them, exporting the extras again would lose
+    // them.
+    const std::pair<const Image*, std::string*> surface[] = {
+        {&job.assets.ao, &extras.maps.ao},
+        {&job.assets.roughness, &extras.maps.roughness},
+        {&job.assets.metallic, &extras.maps.metallic}};
+    const char* surfaceNames[] = {"_ao.png", "_roughness.png", "_metallic.png"};
+    for (int i = 0; i < 3; ++i) {
+        if (surface[i].first->empty())
+            continue;
+        const std::string name = job.stem + surfaceNames[i];
+        if (Status s = job.image(name, *surface[i].first, PixelFormat::UInt8); !s)
+            return s;
+        *surface[i].second = name;
+    }
     // Normals: the exported normal map when there is one (engines read it, so should the
     // extras); from height only where the height map went out too.
     const bool heightNormals = extras.normalSource == NormalSource::HeightCentral ||

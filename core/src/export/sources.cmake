@@ -10,4 +10,5 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/GodotExport.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PackageExport.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PackageShader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/PackageUniforms.cpp
 )

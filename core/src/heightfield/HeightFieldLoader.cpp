@@ -61,6 +61,13 @@ Result<HeightField> heightFieldFromImage(const Image& image, const HeightLoadOpt
         channel = 0; // a grey image is its own luminance
         break;
     }
+    // An EXR holding only "A": reading it as red would take the alpha without a word.
+    if (image.alphaOnly) {
+        if (options.channel != HeightChannel::Alpha)
+            return fileError(source, "the image's only channel is alpha (A): say --channel alpha "
+                                     "to read the height from it");
+        channel = 0;
+    }
     if (channel < 0 || channel >= n)
         return fileError(source, "the requested channel does not exist (the image has " +
                                      std::to_string(n) + " channel" + (n == 1 ? "" : "s") + ")");
@@ -79,8 +86,7 @@ Result<HeightField> heightFieldFromImage(const Image& image, const HeightLoadOpt
             h = span > 0.0f ? (h - lo) / span : 0.0f;
     } else if (lo < 0.0f || hi > 1.0f) {
         return fileError(source, "height values span " + rangeText(lo, hi) +
-                                     ", outside [0, 1]; normalise the map or load it with "
-                                     "normalisation on");
+                                     ", outside [0, 1]; remap it to [0, 1] with --normalize");
     }
     if (options.invert) {
         for (float& h : field.texels)

@@ -1,13 +1,17 @@
 #include "parallax/image/ImageFile.h"
 
 #include "ExrHeaderCheck.h"
+#include "ImageBudget.h"
+#include "PngCheck.h"
 #include "parallax/io/AtomicWrite.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <new>
 #include <system_error>
 
 namespace px {
@@ -75,6 +79,8 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
     // Before OpenEXR, which allocates what a damaged header claims (fuzzing found 1.7 GB).
     if (Status exr = checkExrHeader(path); !exr)
         return exr.error();
+    if (Status png = checkPngStructure(path); !png)
+        return png.error();
 
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1); // material maps are not premultiplied
@@ -92,16 +98,29 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
                                    std::to_string(spec.height) + ", larger than the limit of " +
                                    std::to_string(options.maxSide) + " texels a side");
 
-    Image image(spec.width, spec.height, spec.nchannels);
-    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-        return fileError(path, "the image data could not be read, the file may be truncated (" +
-                                   oiioMessage(input->geterror()) + ")");
-    input->close();
-    if (options.rejectNonFinite) {
-        if (Status finite = checkFinite(path, image); !finite)
-            return finite.error();
+    ImageClaim claim{
+        spec.width,           spec.height,
+        spec.nchannels,       static_cast<std::int64_t>(spec.format.size()),
+        input->format_name(), static_cast<std::int64_t>(std::filesystem::file_size(path, ec))};
+    if (Status fits = checkImageClaim(path, claim); !fits)
+        return fits.error();
+
+    try {
+        Image image(spec.width, spec.height, spec.nchannels);
+        if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+            return fileError(path, "the image data could not be read, the file may be truncated (" +
+                                       oiioMessage(input->geterror()) + ")");
+        input->close();
+        image.alphaOnly = spec.nchannels == 1 && spec.alpha_channel == 0;
+        if (options.rejectNonFinite) {
+            if (Status finite = checkFinite(path, image); !finite)
+                return finite.error();
+        }
+        return image;
+    } catch (const std::bad_alloc&) {
+        return fileError(path, "not enough memory to read the " + std::to_string(spec.width) + "x" +
+                                   std::to_string(spec.height) + " image");
     }
-    return image;
 }
 
 Result<PixelFormat> pixelFormatFromBits(int bits) {
@@ -143,22 +162,29 @@ Status writeImage(const std::string& path, const Image& image, const ImageWriteO
 
     OIIO::ImageSpec spec(image.width, image.height, image.channels, typeOf(options.format));
     spec.attribute("oiio:UnassociatedAlpha", 1);
-    spec.attribute("oiio:ColorSpace", options.srgb ? "sRGB" : "Linear");
+    // A PNG tagged "Linear" gets a gAMA 1.0 chunk, which Godot's and Unity's loaders apply: a
+    // flat normal's 0.498 would read as 0.729. Untagged, every loader takes the values as stored.
+    if (options.srgb)
+        spec.attribute("oiio:ColorSpace", "sRGB");
+    else if (lowerExtension(path) != ".png")
+        spec.attribute("oiio:ColorSpace", "Linear");
     if (lowerExtension(path) == ".exr")
         spec.attribute("compression", "zip");
 
-    const std::filesystem::path target(path);
-    const std::filesystem::path temp = temporaryPathFor(target);
-    if (!output->open(temp.string(), spec))
-        return fileError(path, "cannot create the file (" + oiioMessage(output->geterror()) + ")");
+    // Encoded in memory, then written with every step checked (writeFileAtomically): the image
+    // writers do not all report a full disk.
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    if (!output->supports("ioproxy") || !output->set_ioproxy(&memory))
+        return fileError(path, "this file type cannot be encoded in memory");
+    if (!output->open(path, spec))
+        return fileError(path, "cannot encode the image (" + oiioMessage(output->geterror()) + ")");
     const bool written = output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
     const bool closed = output->close();
-    if (!written || !closed) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        return fileError(path, "writing failed (" + oiioMessage(output->geterror()) + ")");
-    }
-    return commitTemporary(temp, target);
+    if (!written || !closed)
+        return fileError(path, "encoding failed (" + oiioMessage(output->geterror()) + ")");
+    return writeFileAtomically(
+        path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
 } // namespace px

@@ -1,5 +1,7 @@
 # Sources of the core's image area.
 target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/ExrHeaderCheck.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ImageBudget.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ImageFile.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/PngCheck.cpp
 )

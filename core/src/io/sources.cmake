@@ -1,4 +1,7 @@
 # Sources of the core's io area.
 target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/AtomicWrite.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/OutputCheck.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ShortestDecimal.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Temporaries.cpp
 )

@@ -2,13 +2,12 @@
 
 #include "MaterialLimits.h"
 #include "MaterialText.h"
+#include "io/ShortestDecimal.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/MaterialNames.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -261,18 +260,6 @@ void readBody(const json& root, Reader& r, Material& m) {
     }
 }
 
-// The float as the shortest decimal that reads back to it: 0.05f is written "0.05", not
-// "0.05000000074505806".
-double shortest(float value) {
-    char buffer[32];
-    for (int precision = 6; precision <= 9; ++precision) {
-        std::snprintf(buffer, sizeof buffer, "%.*g", precision, static_cast<double>(value));
-        if (std::strtof(buffer, nullptr) == value)
-            break;
-    }
-    return std::strtod(buffer, nullptr);
-}
-
 void read(const json& root, Reader& reader, Material& material, MaterialCheck check);
 
 } // namespace
@@ -342,25 +329,25 @@ std::string materialToJson(const Material& m) {
     root["maps"] = maps;
     root["height"] = {{"channel", toString(m.heightChannel)},
                       {"invert", m.heightIsDepth},
-                      {"scale", shortest(m.heightScale)}};
+                      {"scale", shortestDecimal(m.heightScale)}};
     root["wrap"] = toString(m.wrap);
-    root["tiling"] = shortest(m.tiling);
+    root["tiling"] = shortestDecimal(m.tiling);
     if (m.autoQuality)
         root["technique"] = {{"name", "auto"},
-                             {"budget", shortest(m.autoQuality->budget)},
-                             {"maxPolar", shortest(m.autoQuality->maxPolar)}};
+                             {"budget", shortestDecimal(m.autoQuality->budget)},
+                             {"maxPolar", shortestDecimal(m.autoQuality->maxPolar)}};
     else
         root["technique"] = {
             {"name", info(m.technique).name},      {"minLayers", m.params.minLayers},
             {"maxLayers", m.params.maxLayers},     {"binarySteps", m.params.binarySteps},
             {"secantSteps", m.params.secantSteps}, {"maxSteps", m.params.maxSteps}};
     root["normal"] = {{"source", toString(m.normalSource)}, {"green", toString(m.normalGreen)}};
-    root["shadow"] = {{"enabled", m.selfShadow}, {"softness", shortest(m.shadowSoftness)}};
+    root["shadow"] = {{"enabled", m.selfShadow}, {"softness", shortestDecimal(m.shadowSoftness)}};
     root["lighting"] = {{"model", toString(m.lighting)},
-                        {"roughness", shortest(m.roughness)},
-                        {"metallic", shortest(m.metallic)},
-                        {"specular", shortest(m.specular)},
-                        {"shininess", shortest(m.shininess)}};
+                        {"roughness", shortestDecimal(m.roughness)},
+                        {"metallic", shortestDecimal(m.metallic)},
+                        {"specular", shortestDecimal(m.specular)},
+                        {"shininess", shortestDecimal(m.shininess)}};
     return root.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 

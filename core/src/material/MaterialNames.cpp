@@ -7,8 +7,23 @@ namespace px {
 namespace {
 
 // Index i of each table is the enum value i.
-constexpr std::array<std::string_view, 4> kNormalSources{"none", "map", "height-central",
-                                                         "height-sobel"};
+// Normal sources have two spellings: the material file's, and the short one of the command line
+// and of shader variant names.
+struct NormalSourceSpelling {
+    std::string_view file;
+    std::string_view shortName;
+};
+constexpr std::array<NormalSourceSpelling, 4> kNormalSourceSpellings{
+    {{"none", "none"}, {"map", "map"}, {"height-central", "central"}, {"height-sobel", "sobel"}}};
+template <std::string_view NormalSourceSpelling::*Member>
+constexpr std::array<std::string_view, kNormalSourceSpellings.size()> spellingColumn() {
+    std::array<std::string_view, kNormalSourceSpellings.size()> column{};
+    for (std::size_t i = 0; i < column.size(); ++i)
+        column[i] = kNormalSourceSpellings[i].*Member;
+    return column;
+}
+constexpr auto kNormalSources = spellingColumn<&NormalSourceSpelling::file>();
+constexpr auto kNormalSourceShortNames = spellingColumn<&NormalSourceSpelling::shortName>();
 constexpr std::array<std::string_view, 2> kNormalGreens{"opengl", "directx"};
 constexpr std::array<std::string_view, 2> kLightingModels{"blinn-phong", "metallic-roughness"};
 constexpr std::array<std::string_view, 5> kHeightChannels{"red", "green", "blue", "alpha",
@@ -33,6 +48,9 @@ std::string_view nameAt(const std::array<std::string_view, N>& table, int index)
 std::string_view toString(NormalSource source) {
     return nameAt(kNormalSources, static_cast<int>(source));
 }
+std::string_view shortName(NormalSource source) {
+    return nameAt(kNormalSourceShortNames, static_cast<int>(source));
+}
 std::string_view toString(NormalGreen green) {
     return nameAt(kNormalGreens, static_cast<int>(green));
 }
@@ -46,6 +64,9 @@ std::string_view toString(HeightChannel channel) {
 std::optional<NormalSource> parseNormalSource(std::string_view name) {
     return find<NormalSource>(kNormalSources, name);
 }
+std::optional<NormalSource> parseNormalSourceShortName(std::string_view name) {
+    return find<NormalSource>(kNormalSourceShortNames, name);
+}
 std::optional<NormalGreen> parseNormalGreen(std::string_view name) {
     return find<NormalGreen>(kNormalGreens, name);
 }
@@ -55,6 +76,9 @@ std::optional<LightingModel> parseLightingModel(std::string_view name) {
 
 std::span<const std::string_view> normalSourceNames() {
     return kNormalSources;
+}
+std::span<const std::string_view> normalSourceShortNames() {
+    return kNormalSourceShortNames;
 }
 std::span<const std::string_view> normalGreenNames() {
     return kNormalGreens;

@@ -1,5 +1,7 @@
 #include "parallax/sample/ProceduralMaps.h"
 
+#include "AdversarialMaps.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,9 +11,9 @@
 namespace px {
 namespace {
 
-constexpr std::array<std::string_view, 11> kNames{"bricks", "stones", "rivets",  "noise",
-                                                  "random", "ramp",   "checker", "spikes",
-                                                  "step",   "cracks", "flat"};
+constexpr std::array<std::string_view, 17> kNames{
+    "bricks", "stones", "rivets",     "noise", "random", "ramp", "checker",  "spikes",  "step",
+    "cracks", "flat",   "spike-flat", "walls", "treads", "pits", "terraces", "outliers"};
 
 // A hash of integer lattice points to [0, 1): deterministic noise without global state.
 float hash01(int x, int y, unsigned seed) {
@@ -115,6 +117,8 @@ std::optional<ProceduralMap> parseProceduralMap(std::string_view name) {
 
 HeightField makeProceduralMap(ProceduralMap kind, int width, int height, unsigned seed,
                               float level) {
+    if (isAdversarial(kind))
+        return makeAdversarialMap(kind, width, height, seed);
     HeightField field(width, height);
     std::mt19937 random(seed);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
@@ -155,6 +159,8 @@ HeightField makeProceduralMap(ProceduralMap kind, int width, int height, unsigne
                 break;
             case ProceduralMap::Flat:
                 h = level;
+                break;
+            default: // the adversarial maps, made above
                 break;
             }
             field.at(x, y) = std::clamp(h, 0.0f, 1.0f);

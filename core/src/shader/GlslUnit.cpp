@@ -1,5 +1,6 @@
 #include "GlslUnit.h"
 
+#include <algorithm>
 #include <cctype>
 #include <deque>
 #include <map>
@@ -140,39 +141,56 @@ std::vector<std::string> identifiers(std::string_view code) {
     return ids;
 }
 
-// The name a code item declares: a struct's tag, a function's name, or a global's name.
-std::string declaredName(std::string_view code) {
-    std::vector<std::string> outside; // identifiers at parenthesis depth 0, before = [ ; {
-    std::string beforeParen;
+// The names a code item declares: a struct's tag, a function's name, or each declarator of a
+// global ("int a, b;" declares a and b). A declarator's name is its last identifier before its
+// '=', '[' or the comma or ';' that ends it; commas inside (), [] and {} do not split.
+std::vector<std::string> declaredNames(std::string_view code) {
+    std::vector<std::string> names;
+    std::vector<std::string> words; // the current declarator's identifiers at depth 0
+    bool named = false;             // its '=' or '[' was seen: no later identifier is its name
+    std::string beforeParen;        // the identifier before the first top-level '('
     int depth = 0;
-    bool sawParen = false;
+    auto endDeclarator = [&] {
+        if (!words.empty())
+            names.push_back(words.back());
+        words.clear();
+        named = false;
+    };
     for (std::size_t i = 0; i < code.size(); ++i) {
         const char c = code[i];
-        if (c == '(') {
-            if (depth == 0 && !sawParen && !outside.empty()) {
-                beforeParen = outside.back();
-                sawParen = true;
+        if (c == '(' || c == '[' || c == '{') {
+            if (depth == 0 && c == '(' && beforeParen.empty() && !words.empty() && names.empty())
+                beforeParen = words.back();
+            if (depth == 0 && c == '{') {
+                if (words.size() >= 2 && words.front() == "struct")
+                    return {words[1]};
+                if (!beforeParen.empty())
+                    return {beforeParen}; // a function's body
             }
+            if (depth == 0 && c == '[')
+                named = true;
             ++depth;
-        } else if (c == ')') {
+        } else if (c == ')' || c == ']' || c == '}') {
             --depth;
-        } else if (depth == 0 && (c == '=' || c == '[' || c == ';')) {
+        } else if (depth == 0 && c == '=') {
+            named = true;
+        } else if (depth == 0 && c == ',') {
+            endDeclarator();
+        } else if (depth == 0 && c == ';') {
             break;
-        } else if (depth == 0 && c == '{') {
-            if (!outside.empty() && outside.front() == "struct" && outside.size() >= 2)
-                return outside[1];
-            return beforeParen;
-        } else if (depth == 0 && isIdentStart(c)) {
+        } else if (isIdentStart(c)) {
             const std::size_t start = i;
             while (i + 1 < code.size() && isIdentChar(code[i + 1]))
                 ++i;
-            outside.emplace_back(code.substr(start, i + 1 - start));
-        } else if (depth == 0 && std::isdigit(static_cast<unsigned char>(c))) {
+            if (depth == 0 && !named)
+                words.emplace_back(code.substr(start, i + 1 - start));
+        } else if (std::isdigit(static_cast<unsigned char>(c))) {
             while (i + 1 < code.size() && (isIdentChar(code[i + 1]) || code[i + 1] == '.'))
                 ++i;
         }
     }
-    return outside.empty() ? std::string() : outside.back();
+    endDeclarator();
+    return names;
 }
 
 } // namespace
@@ -292,13 +310,13 @@ Result<std::vector<GlslItem>> splitItems(std::string_view text, int file, const 
         if (hash != std::string::npos && code[hash] == '#') {
             const std::vector<std::string> ids = identifiers(code);
             if (ids.size() >= 2 && ids[0] == "define")
-                item.name = ids[1];
+                item.names.push_back(ids[1]);
             for (std::size_t k = 2; k < ids.size(); ++k)
                 item.references.insert(ids[k]);
         } else {
-            item.name = declaredName(code);
+            item.names = declaredNames(code);
             for (std::string& id : identifiers(code)) {
-                if (id != item.name)
+                if (std::find(item.names.begin(), item.names.end(), id) == item.names.end())
                     item.references.insert(std::move(id));
             }
         }
@@ -407,8 +425,8 @@ std::vector<const GlslItem*> reachableItems(const std::vector<GlslItem>& items,
                                             std::set<std::string>& external) {
     std::multimap<std::string, std::size_t> byName;
     for (std::size_t k = 0; k < items.size(); ++k) {
-        if (!items[k].name.empty())
-            byName.emplace(items[k].name, k);
+        for (const std::string& name : items[k].names)
+            byName.emplace(name, k);
     }
     std::vector<bool> kept(items.size(), false);
     std::deque<std::string> queue(roots.begin(), roots.end());

@@ -15,7 +15,8 @@ namespace px::shader {
 
 // One top-level declaration with the comment lines directly above it.
 struct GlslItem {
-    std::string name;                 // what it declares; empty for other directives
+    std::vector<std::string> names;   // what it declares ("int a, b;": a and b); none for
+                                      // directives other than #define
     std::string text;                 // verbatim, comment included, ending with a newline
     int file = 0;                     // source-string number of its file
     int firstLine = 1;                // 1-based line of text's first line in its file

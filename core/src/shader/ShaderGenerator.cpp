@@ -5,6 +5,7 @@
 #include "ShaderFiles.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <regex>
 #include <set>
@@ -116,7 +117,7 @@ Result<GeneratedShader> generateStage(const VariantKey& key,
             while (code != std::string::npos && item->text.compare(code, 2, "//") == 0)
                 code = item->text.find_first_not_of(" \t\n", item->text.find('\n', code));
             if (code != std::string::npos && item->text.compare(code, 3, "in ") == 0)
-                inputs->insert(item->name);
+                inputs->insert(item->names.begin(), item->names.end());
         }
     }
 
@@ -165,6 +166,12 @@ Result<GeneratedShader> generateStage(const VariantKey& key,
     return s;
 }
 
+bool parseNumber(const std::string& digits, unsigned long& value) {
+    const char* end = digits.data() + digits.size();
+    const auto [ptr, ec] = std::from_chars(digits.data(), end, value);
+    return ec == std::errc() && ptr == end;
+}
+
 } // namespace
 
 Result<GeneratedProgram> generateProgram(const VariantKey& requested) {
@@ -205,14 +212,17 @@ std::string mapCompilerLog(std::string_view log, const std::vector<std::string>&
     for (auto it = std::sregex_iterator(text.begin(), text.end(), position);
          it != std::sregex_iterator(); ++it) {
         const std::smatch& m = *it;
-        unsigned long source = std::stoul(m[2].str());
-        unsigned long line = std::stoul(m[4].matched ? m[4].str() : m[5].str());
-        if (line >= static_cast<unsigned long>(kLineBase)) {
+        // A driver's log is untrusted text: a number too long for the type is left as it is
+        // (std::from_chars reports it; std::stoul would throw through the core).
+        unsigned long source = 0, line = 0;
+        const bool parsed = parseNumber(m[2].str(), source) &&
+                            parseNumber(m[4].matched ? m[4].str() : m[5].str(), line);
+        if (parsed && line >= static_cast<unsigned long>(kLineBase)) {
             source = line / kLineBase;
             line %= kLineBase;
         }
         out.append(text, last, m.position(0) - last);
-        if (source < sources.size())
+        if (parsed && source < sources.size())
             out += m[1].str() + sources[source] + ":" + std::to_string(line);
         else
             out += m[0].str();

@@ -1,6 +1,6 @@
 #include "parallax/shader/VariantKey.h"
 
-#include <array>
+#include "parallax/material/MaterialNames.h"
 
 namespace px {
 
@@ -8,9 +8,6 @@ namespace {
 
 constexpr int kTechniqueCount = static_cast<int>(Technique::Exact) + 1;
 static_assert(kTechniqueCount <= 16, "the technique takes 4 bits of a variant key");
-
-constexpr std::array<std::string_view, 4> kNormalSourceNames{"none", "map", "central", "sobel"};
-constexpr std::array<std::string_view, 2> kLightingNames{"blinn-phong", "metallic-roughness"};
 
 } // namespace
 
@@ -76,7 +73,7 @@ std::string VariantKey::name() const {
     if (normalSource == NormalSource::Map)
         n += "+normal-map";
     else if (normalSource != NormalSource::None)
-        n += "+" + std::string(shader::normalSourceName(normalSource));
+        n += "+" + std::string(shortName(normalSource));
     if (albedoMap)
         n += "+albedo";
     if (surfaceMap)
@@ -144,33 +141,5 @@ VariantKey variantFor(const Material& m, ShaderOutput output) {
     k.output = output;
     return canonical(k);
 }
-
-namespace shader {
-
-std::optional<NormalSource> parseNormalSource(std::string_view name) {
-    for (std::size_t i = 0; i < kNormalSourceNames.size(); ++i) {
-        if (kNormalSourceNames[i] == name)
-            return static_cast<NormalSource>(i);
-    }
-    return std::nullopt;
-}
-
-std::string_view normalSourceName(NormalSource source) {
-    return kNormalSourceNames.at(static_cast<std::size_t>(source));
-}
-
-std::optional<LightingModel> parseLightingModel(std::string_view name) {
-    for (std::size_t i = 0; i < kLightingNames.size(); ++i) {
-        if (kLightingNames[i] == name)
-            return static_cast<LightingModel>(i);
-    }
-    return std::nullopt;
-}
-
-std::string_view lightingModelName(LightingModel model) {
-    return kLightingNames.at(static_cast<std::size_t>(model));
-}
-
-} // namespace shader
 
 } // namespace px

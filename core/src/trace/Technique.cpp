@@ -12,10 +12,10 @@ constexpr TraceParams layered(int minLayers, int maxLayers) {
     return p;
 }
 
-constexpr TraceParams capped(int maxSteps, int binarySteps = 0) {
+constexpr TraceParams capped(int maxSteps) {
     TraceParams p;
     p.maxSteps = maxSteps;
-    p.binarySteps = binarySteps;
+    p.binarySteps = 0; // not read: kept 0 so that saved materials do not suggest otherwise
     return p;
 }
 
@@ -30,7 +30,7 @@ constexpr std::array kTechniques{
     TechniqueInfo{Technique::Relief,      "relief",       "Relief mapping (binary search)",  true,  true,  true,  false, false, false, false, false, layered(8, 32)},
     TechniqueInfo{Technique::Secant,      "secant",       "Secant refinement",               true,  true,  false, true,  false, false, false, false, layered(8, 32)},
     TechniqueInfo{Technique::Cone,        "cone",         "Cone step mapping",               true,  false, false, false, true,  true,  false, false, capped(128)},
-    TechniqueInfo{Technique::RelaxedCone, "relaxed-cone", "Relaxed cone stepping",           true,  false, true,  false, true,  false, true,  false, capped(64, 8)},
+    TechniqueInfo{Technique::RelaxedCone, "relaxed-cone", "Relaxed cone stepping",           true,  false, false, false, true,  false, true,  false, capped(64)},
     TechniqueInfo{Technique::Pyramid,     "pyramid",      "Pyramidal (max-mip) displacement",true,  false, false, false, true,  false, false, true,  capped(1 << 16)},
     TechniqueInfo{Technique::Exact,       "exact",        "Exact intersection (reference)",  true,  false, false, false, true,  false, false, false, capped(1 << 22)},
 };
@@ -58,7 +58,7 @@ std::optional<Technique> parseTechnique(std::string_view name) {
     return std::nullopt;
 }
 
-long long fetchCap(Technique t, const TraceParams& p) {
+long long fetchCap(Technique t, const TraceParams& p, long long rayCells) {
     switch (t) {
     case Technique::None:
     case Technique::Normal:
@@ -72,12 +72,12 @@ long long fetchCap(Technique t, const TraceParams& p) {
         return p.maxLayers + 1 + p.binarySteps;
     case Technique::Secant:
         return p.maxLayers + 1 + p.secantSteps;
+    // The cone marches and the pyramid end with at most one exact walk over part of the ray.
     case Technique::Cone:
-        return p.maxSteps; // one gather of the cell's corner cones per step
-    case Technique::RelaxedCone:
-        return 2LL * p.maxSteps + p.binarySteps;
-    case Technique::Pyramid:
-        return 2LL * p.maxSteps; // a node and a cell solve per step
+        return p.maxSteps + rayCells; // one gather of the cell's corner cones per step
+    case Technique::RelaxedCone:      // a cone sample and a cell solve per step
+    case Technique::Pyramid:          // a node and a cell solve per step
+        return 2LL * p.maxSteps + rayCells;
     case Technique::Exact:
         return p.maxSteps; // one gather per cell
     }

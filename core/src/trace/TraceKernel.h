@@ -38,6 +38,9 @@ struct TraceKernel {
     }
     float pxMaxMipNode(int level, ivec2 n) const { return pyramid->at(level, n.x, n.y); }
 
+    // GlslSubsetBegin.h must stay first and GlslSubsetEnd.h last: not sorted.
+    // clang-format off
+#include "trace/GlslSubsetBegin.h"
 #include "trace/common.glsl"
 #include "trace/cone_conservative.glsl"
 #include "trace/cone_relaxed.glsl"
@@ -52,6 +55,8 @@ struct TraceKernel {
 #include "trace/shadow.glsl"
 #include "trace/steep.glsl"
 #include "trace/walk.glsl"
+#include "trace/GlslSubsetEnd.h"
+    // clang-format on
 };
 // NOLINTEND
 

@@ -15,6 +15,13 @@ glm::vec2 parallaxVector(float heightScale, double polarDeg, double azimuthDeg) 
             static_cast<float>(length * std::sin(azimuth))};
 }
 
+long long rayCellBound(glm::vec2 P, int width, int height) {
+    // One cell per border crossed on each axis, the first cell, and one per axis for rounding
+    // (pxCellAt may step past a border the float position has not reached yet).
+    return static_cast<long long>(std::floor(std::abs(static_cast<double>(P.x)) * width)) +
+           static_cast<long long>(std::floor(std::abs(static_cast<double>(P.y)) * height)) + 3;
+}
+
 glm::dvec2 rayOrigin(const TraceScene& scene, int i, int j) {
     return glm::dvec2((i + 0.5) / scene.rays, (j + 0.5) / scene.rays) + scene.uvOffset;
 }

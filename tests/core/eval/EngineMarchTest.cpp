@@ -85,7 +85,6 @@ void EngineMarchTest::layerCountIsGodotsMix() {
 
 void EngineMarchTest::marchMatchesThePublishedShader() {
     const HeightField field = makeProceduralMap(ProceduralMap::Stones, 64, 64, 3);
-    Sampler heights(field, WrapMode::Repeat);
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     int compared = 0;
@@ -100,7 +99,7 @@ void EngineMarchTest::marchMatchesThePublishedShader() {
                     const ShaderHit want = publishedShader(field, u0, v0, polar, azimuth, 5.0,
                                                            layers.minLayers, layers.maxLayers);
                     const TraceResult got =
-                        godotDeepParallax(heights, {u0, v0}, P, cosPolar, layers);
+                        godotDeepParallax(field, WrapMode::Repeat, {u0, v0}, P, cosPolar, layers);
                     // float against double: the same steps, within float rounding of a texel
                     const double texels = std::hypot(got.u - want.u, got.v - want.v) * 64.0;
                     QVERIFY2(texels < 1e-3, qPrintable(QString("polar %1 azimuth %2: %3 texels")
@@ -120,11 +119,10 @@ void EngineMarchTest::flatMapIsFoundExactly() {
     // On a plane the linear interpolation between the last two layers is exact: the hit is at
     // depth 1 - h along Godot's P, whatever the layers.
     const HeightField flat(16, 16, 0.25f);
-    Sampler heights(flat, WrapMode::Repeat);
     const glm::vec2 P = godotParallaxVector(0.1f, 70.0, 20.0);
     const float cosPolar = static_cast<float>(std::cos(70.0 * std::numbers::pi / 180.0));
     for (int maxLayers : {4, 9, 32}) {
-        const TraceResult hit = godotDeepParallax(heights, {0.3, 0.6}, P, cosPolar,
+        const TraceResult hit = godotDeepParallax(flat, WrapMode::Repeat, {0.3, 0.6}, P, cosPolar,
                                                   {std::max(1, maxLayers / 4), maxLayers});
         QVERIFY(std::abs(hit.u - (0.3 + P.x * 0.75)) < 1e-5);
         QVERIFY(std::abs(hit.v - (0.6 + P.y * 0.75)) < 1e-5);
@@ -146,7 +144,6 @@ void EngineMarchTest::adviceMeetsTheBudgetOnFreshRays() {
 
     // Fresh rays of the test's own drawing against the exact hit of Godot's own ray.
     const HeightField& field = *config.field;
-    Sampler heights(field, WrapMode::Repeat);
     TraceMaps maps;
     maps.height = &field;
     Result<Tracer> exact =
@@ -162,7 +159,7 @@ void EngineMarchTest::adviceMeetsTheBudgetOnFreshRays() {
             for (int k = 0; k < 2000; ++k) {
                 const glm::dvec2 uv0(uniform(rng), uniform(rng));
                 const TraceResult hit =
-                    godotDeepParallax(heights, uv0, P, cosPolar, advice->layers);
+                    godotDeepParallax(field, WrapMode::Repeat, uv0, P, cosPolar, advice->layers);
                 errors.push_back(hitErrorTexels(hit, exact->trace(uv0, P), 64, 64));
             }
         }

@@ -17,6 +17,8 @@ private slots:
     void invalidRaysAreCountedNotMeasured();
     void wrongSurfaceIsOverTwoTexels();
     void pooledPercentilesAreOfEveryRay();
+    void measuredErrorsGiveTheSameTail();
+    void documentedExactTechniques();
 };
 
 namespace {
@@ -88,6 +90,31 @@ void HitErrorStatsTest::pooledPercentilesAreOfEveryRay() {
     QCOMPARE(s.p99Error, 1.0);
     QCOMPARE(s.maxError, 50.0);
     QCOMPARE(measureHits(gotA, refA, 100, 100).p99Error, 0.0);
+}
+
+// The editor feeds errors it measured itself: 99 rays on the surface and one 141 texels off keep
+// p99 small, and the max and the wrong-surface count are what shows that ray.
+void HitErrorStatsTest::measuredErrorsGiveTheSameTail() {
+    HitErrorAccumulator acc;
+    for (int k = 0; k < 99; ++k)
+        acc.addError(0.01, 4);
+    acc.addError(141.0, 30);
+    acc.addError(std::numeric_limits<double>::quiet_NaN(), 2);
+    const HitErrorStats s = acc.stats();
+    QCOMPARE(s.rays, std::int64_t(101));
+    QCOMPARE(s.invalid, std::int64_t(1));
+    QCOMPARE(s.p99Error, 0.01);
+    QCOMPARE(s.maxError, 141.0);
+    QCOMPARE(s.wrongSurface, std::int64_t(1));
+    QCOMPARE(s.maxFetches, 30);
+}
+
+void HitErrorStatsTest::documentedExactTechniques() {
+    QVERIFY(isDocumentedExact(Technique::Cone));
+    QVERIFY(isDocumentedExact(Technique::Pyramid));
+    QVERIFY(isDocumentedExact(Technique::Exact));
+    QVERIFY(!isDocumentedExact(Technique::RelaxedCone));
+    QVERIFY(!isDocumentedExact(Technique::Pom));
 }
 
 QTEST_APPLESS_MAIN(HitErrorStatsTest)

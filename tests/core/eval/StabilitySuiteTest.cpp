@@ -3,6 +3,8 @@
 
 #include "parallax/eval/StabilitySuite.h"
 
+#include "parallax/trace/TraceScene.h"
+
 #include <QtTest>
 #include <set>
 
@@ -41,10 +43,34 @@ void StabilitySuiteTest::theIssuesCasesAreThere() {
     std::set<std::string_view> names;
     for (const StabilityCaseInfo& c : stabilityCases())
         names.insert(c.name);
-    for (std::string_view required :
-         {"polar-89.9", "scale-0", "tiny-scale", "huge-scale", "flat-0", "flat-1", "checkerboard",
-          "needles", "vertical-steps", "thin-cracks", "1x1", "non-power-of-two", "uv0-near-4096",
-          "zero-cones", "nan-in-float-map", "foreign-cone-map"})
+    for (std::string_view required : {"polar-89.9",
+                                      "scale-0",
+                                      "tiny-scale",
+                                      "huge-scale",
+                                      "flat-0",
+                                      "flat-1",
+                                      "checkerboard",
+                                      "needles",
+                                      "vertical-steps",
+                                      "thin-cracks",
+                                      "1x1",
+                                      "non-power-of-two",
+                                      "uv0-near-4096",
+                                      "zero-cones",
+                                      "nan-in-float-map",
+                                      "foreign-cone-map",
+                                      "adversarial-spike-flat",
+                                      "adversarial-walls",
+                                      "adversarial-treads",
+                                      "adversarial-pits",
+                                      "adversarial-terraces",
+                                      "adversarial-outliers",
+                                      "adversarial-spike-flat-clamp",
+                                      "adversarial-walls-clamp",
+                                      "adversarial-treads-clamp",
+                                      "adversarial-pits-clamp",
+                                      "adversarial-terraces-clamp",
+                                      "adversarial-outliers-clamp"})
         QVERIFY2(names.count(required) == 1, required.data());
 }
 
@@ -65,13 +91,18 @@ void StabilitySuiteTest::fetchCaps() {
     p.binarySteps = 6;
     p.secantSteps = 3;
     p.maxSteps = 24;
-    QCOMPARE(fetchCap(Technique::Offset, p), 1LL);
-    QCOMPARE(fetchCap(Technique::Pom, p), 33LL);
-    QCOMPARE(fetchCap(Technique::Relief, p), 39LL);
-    QCOMPARE(fetchCap(Technique::Secant, p), 36LL);
-    QCOMPARE(fetchCap(Technique::RelaxedCone, p), 54LL);
-    QCOMPARE(fetchCap(Technique::Cone, p), 24LL);
-    QCOMPARE(fetchCap(Technique::Exact, p), 24LL);
+    const long long cells = 100; // the exact walk that finishes the cone marches and the pyramid
+    QCOMPARE(fetchCap(Technique::Offset, p, cells), 1LL);
+    QCOMPARE(fetchCap(Technique::Pom, p, cells), 33LL);
+    QCOMPARE(fetchCap(Technique::Relief, p, cells), 39LL);
+    QCOMPARE(fetchCap(Technique::Secant, p, cells), 36LL);
+    QCOMPARE(fetchCap(Technique::RelaxedCone, p, cells), 148LL);
+    QCOMPARE(fetchCap(Technique::Cone, p, cells), 124LL);
+    QCOMPARE(fetchCap(Technique::Pyramid, p, cells), 148LL);
+    QCOMPARE(fetchCap(Technique::Exact, p, cells), 24LL);
+    // A ray 2.5 x 0.5 tiles on a 10 x 20 map crosses at most 25 + 10 borders, plus its first
+    // cell and one per axis for rounding.
+    QCOMPARE(rayCellBound(glm::vec2(-2.5f, 0.5f), 10, 20), 38LL);
 }
 
 void StabilitySuiteTest::boundsFailWhenBroken() {
@@ -85,7 +116,11 @@ void StabilitySuiteTest::boundsFailWhenBroken() {
     };
     QCOMPARE(check(BoundKind::MaxTexels, 3.0).failure, std::string());
     QCOMPARE(check(BoundKind::MaxTexels, 2.9).failure, std::string("error above the bound"));
-    QCOMPARE(check(BoundKind::MaxTexels, 2.9).figure, std::string("max 3 <= 2.9 texels"));
+    // Beside the bound, the tail every figure reports: p99, max and the rays on another surface.
+    QCOMPARE(check(BoundKind::MaxTexels, 2.9).figure,
+             std::string("max 3 <= 2.9 texels (p99 3, max 3, 1 rays > 2 texels)"));
+    QCOMPARE(check(BoundKind::None, 0.0).figure,
+             std::string("no bound: rule (p99 3, max 3, 1 rays > 2 texels)"));
     QCOMPARE(check(BoundKind::P99Texels, 2.9).failure, std::string("p99 error above the bound"));
     QCOMPARE(check(BoundKind::NoOvershoot, 1.0).failure, std::string());
     QCOMPARE(check(BoundKind::NoOvershoot, 0.5).failure, std::string("a ray ended past the hit"));

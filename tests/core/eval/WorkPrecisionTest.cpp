@@ -1,5 +1,5 @@
 // The work-precision chart as data: series per technique, the Pareto front, the error floor,
-// which cost axes exist, and picking the point a click lands on.
+// and which cost axes exist.
 
 #include "parallax/eval/WorkPrecision.h"
 
@@ -14,7 +14,6 @@ private slots:
     void seriesAndFront();
     void floorAndRanges();
     void costAxes();
-    void picking();
 };
 
 namespace {
@@ -93,18 +92,6 @@ void WorkPrecisionTest::costAxes() {
     // A GPU axis only when every row has a GPU time.
     r.pooled[0].gpuMsPerFrame = 3.0;
     QCOMPARE(makeWorkPrecisionChart(r).axes.size(), std::size_t(2));
-}
-
-void WorkPrecisionTest::picking() {
-    const WorkPrecisionPanel p = makeWorkPrecisionChart(report()).panel(0, 0);
-    std::optional<PointRef> hit = pickPoint(p, 15.5, 0.82);
-    QVERIFY(hit.has_value());
-    QCOMPARE(p.at(*hit).setting.technique, Technique::RelaxedCone);
-    QVERIFY(!pickPoint(p, 15.0, 0.08).has_value()); // a decade away
-    std::optional<PointRef> floor = pickPoint(p, 31.0, 1.1e-4);
-    QVERIFY(floor.has_value());
-    QCOMPARE(p.at(*floor).setting.technique, Technique::Pyramid);
-    QVERIFY(!pickPoint(p, 0.0, 1.0).has_value());
 }
 
 QTEST_APPLESS_MAIN(WorkPrecisionTest)

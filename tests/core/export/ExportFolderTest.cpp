@@ -1,5 +1,5 @@
-// The export folder: built beside the target and swapped in whole; never replaces a folder
-// without --force, nor a folder of someone else's files even with it.
+// The export folder: built beside the target and moved in whole; never replaces a folder without
+// --force, nor a folder of someone else's files even with it; updates an earlier export in place.
 
 #include "parallax/export/ExportFolder.h"
 
@@ -24,6 +24,7 @@ private slots:
     void existingFolderNeedsForce();
     void forceReplacesAPreviousExport();
     void forceNeverReplacesForeignFiles();
+    void forceKeepsFilesNoExportWrote();
     void emptyFolderIsReplacedWithoutForce();
     void fileInTheWayRefused();
 
@@ -46,9 +47,9 @@ void ExportFolderTest::createsParentsAndCommits() {
     QVERIFY(!fs::exists(path("a/b/out"))); // nothing visible until commit
     QVERIFY(writeTextFile(folder->pathFor("x.txt"), "x").ok());
     folder->add("x.txt");
-    Result<std::vector<std::string>> files = folder->commit("test");
+    Result<ExportFolder::Committed> files = folder->commit("test");
     QVERIFY(files.ok());
-    QCOMPARE(files->size(), std::size_t(1));
+    QCOMPARE(files->files.size(), std::size_t(1));
     QCOMPARE(*readTextFile(path("a/b/out/x.txt").string()), std::string("x"));
     const std::string marker = *readTextFile((path("a/b/out") / kExportMarker).string());
     QVERIFY(marker.find("test\nx.txt\n") != std::string::npos);
@@ -85,9 +86,33 @@ void ExportFolderTest::forceReplacesAPreviousExport() {
         folder->add(name);
         QVERIFY(folder->commit("test").ok());
     }
-    QVERIFY(!fs::exists(path("out/first.txt"))); // replaced whole, not merged
+    QVERIFY(!fs::exists(path("out/first.txt"))); // the earlier export listed it
     QVERIFY(fs::exists(path("out/second.txt")));
     QCOMPARE(entries(), QStringList{"out"}); // no staging or old folder left
+}
+
+// Engines keep their references to the textures in files beside them (Unity .meta, Godot
+// .import): re-exporting updates the textures in place and keeps those, and says so.
+void ExportFolderTest::forceKeepsFilesNoExportWrote() {
+    auto exportOnce = [this](const std::string& contents) {
+        Result<ExportFolder> folder = ExportFolder::begin(path("out"), true);
+        if (!folder)
+            return Result<ExportFolder::Committed>(folder.error());
+        if (Status s = writeTextFile(folder->pathFor("a.png"), contents); !s)
+            return Result<ExportFolder::Committed>(s.error());
+        folder->add("a.png");
+        return folder->commit("test");
+    };
+    QVERIFY(exportOnce("first").ok());
+    QVERIFY(writeTextFile(path("out/a.png.meta").string(), "guid: 1234").ok());
+    QVERIFY(writeTextFile(path("out/a.png.import").string(), "uid://x").ok());
+    Result<ExportFolder::Committed> second = exportOnce("second");
+    QVERIFY2(second.ok(), second.ok() ? "" : second.error().message.c_str());
+    QCOMPARE(*readTextFile(path("out/a.png").string()), std::string("second"));
+    QCOMPARE(*readTextFile(path("out/a.png.meta").string()), std::string("guid: 1234"));
+    QCOMPARE(*readTextFile(path("out/a.png.import").string()), std::string("uid://x"));
+    QCOMPARE(second->kept, (std::vector<std::string>{"a.png.import", "a.png.meta"}));
+    QCOMPARE(entries(), QStringList{"out"});
 }
 
 void ExportFolderTest::forceNeverReplacesForeignFiles() {

@@ -34,6 +34,7 @@ private slots:
     void gltfDescribesPlaneMaterialAndExtras();
     void gltfExtrasAlwaysAValidMaterial();
     void godotMaterialResource();
+    void godotNotesWhatItCannotMatch();
     void unrealTexturesAndNote();
     void unityPacking();
     void engineBakesNormalsWithoutANormalMap();
@@ -138,9 +139,24 @@ void ExporterTest::packageHasOnlyTheMapsTheTechniqueNeeds() {
                  std::string::npos,
              note.c_str());
     QVERIFY(note.find("bricks_height.png") != std::string::npos);
-    QVERIFY2(note.find("sampler2D pxHeightMap  (binding 0: the height map as R16") !=
-                 std::string::npos,
+    QVERIFY2(note.find("sampler2D pxHeightMap  binding 0: bricks_height.png as GL_R16 (GL_R32F for "
+                       ".exr), mipmapped") != std::string::npos,
              note.c_str());
+    // Every value uniform of the shader has its value and meaning in the note, and the values
+    // are the material's (the height's maximum as the 16-bit file stores it).
+    for (const GeneratedShader* shader : {&program->fragment, &program->vertex}) {
+        for (const ShaderUniform& u : shader->uniforms) {
+            const std::string line =
+                "  " + u.type + " " + u.name + (u.unit >= 0 ? "  binding " : " = ");
+            QVERIFY2(note.find(line) != std::string::npos, (u.name + "\n" + note).c_str());
+        }
+    }
+    char heightMax[64];
+    std::snprintf(heightMax, sizeof heightMax, "float pxHeightMax = %g  (must set",
+                  std::round(m_height.maxHeight() * 65535.0f) / 65535.0f);
+    QVERIFY2(note.find(heightMax) != std::string::npos, (heightMax + ("\n" + note)).c_str());
+    QVERIFY(note.find("float pxScale = 0.05  (must set") != std::string::npos);
+    QVERIFY(note.find("pxFragColor is already sRGB-encoded") != std::string::npos);
     // Albedo stays sRGB 8-bit, height 16-bit.
     const Image albedo = read("out/bricks_albedo.png");
     QVERIFY(std::abs(albedo.at(3, 3, 0) - 0.8f) < 0.5f / 255);
@@ -260,6 +276,24 @@ void ExporterTest::gltfDescribesPlaneMaterialAndExtras() {
     QCOMPARE(extras["maps"]["height"].get<std::string>(), std::string("bricks_height.png"));
     QVERIFY(fs::exists(path("out/bricks_height.png")));
     QVERIFY(parseMaterial(extras.dump(), "extras").ok());
+    // The extras round-trip: saved beside the glTF they are the whole material (occlusion and
+    // roughness maps included), and exporting them again gives the same shader variant.
+    QCOMPARE(extras["maps"]["ao"].get<std::string>(), std::string("bricks_ao.png"));
+    QCOMPARE(extras["maps"]["roughness"].get<std::string>(), std::string("bricks_roughness.png"));
+    QVERIFY(writeTextFile(path("out/extras.json"), extras.dump()).ok());
+    Result<Material> again = loadMaterial(path("out/extras.json"));
+    QVERIFY2(again.ok(), again.ok() ? "" : again.error().message.c_str());
+    QCOMPARE(QString::fromStdString(variantFor(*again).name()),
+             QString::fromStdString(variantFor(m_material).name()));
+    ExportOptions second;
+    second.outDir = path("again");
+    Result<ExportResult> repackaged = exportMaterial(*again, path("out/extras.json"), second);
+    QVERIFY2(repackaged.ok(), repackaged.ok() ? "" : repackaged.error().message.c_str());
+    Result<Material> packaged = loadMaterial(path("again/bricks.json"));
+    QVERIFY(packaged.ok());
+    QCOMPARE(QString::fromStdString(variantFor(*packaged).name()),
+             QString::fromStdString(variantFor(m_material).name()));
+    QVERIFY(std::abs(read("again/bricks_orm.png").at(4, 4, 1) - 0.3f) < 1.0f / 255);
     // The plane's uv carry the tiling; the buffer is as long as it says.
     QCOMPARE(gltf["buffers"][0]["byteLength"].get<std::uintmax_t>(),
              fs::file_size(path("out/bricks.bin")));
@@ -300,6 +334,36 @@ void ExporterTest::godotMaterialResource() {
     QVERIFY(std::abs(read("out/bricks_normal.png").at(0, 0, 1) - 0.75f) < 1.0f / 255);
 }
 
+// What Godot cannot do as the material does is said, not dropped: sin θ instead of tan θ, sliders
+// that clamp, self-shadowing.
+void ExporterTest::godotNotesWhatItCannotMatch() {
+    m_material.selfShadow = true;
+    m_material.heightScale = 0.2f; // heightmap_scale 20: past the slider's 16
+    Result<ExportResult> result = run(ExportFormat::Godot);
+    QVERIFY(result.ok());
+    const std::string notes = [&] {
+        std::string all;
+        for (const std::string& n : result->notes)
+            all += n + "\n";
+        return all;
+    }();
+    for (const char* text :
+         {"Godot offsets by sin θ of the view angle, not tan θ: heightmap_scale "
+          "= 20 matches the material looking straight down",
+          "half at 60°", "sliders stop at heightmap_scale 16", "self-shadowing is not exported"})
+        QVERIFY2(notes.find(text) != std::string::npos,
+                 qPrintable(QString(text) + "\n" + notes.c_str()));
+    m_material.selfShadow = false;
+    m_material.heightScale = 0.05f;
+    m_options.force = true;
+    result = run(ExportFormat::Godot);
+    QVERIFY(result.ok());
+    for (const std::string& n : result->notes) {
+        QVERIFY2(n.find("sliders") == std::string::npos, n.c_str());
+        QVERIFY2(n.find("self-shadowing") == std::string::npos, n.c_str());
+    }
+}
+
 void ExporterTest::unrealTexturesAndNote() {
     m_material.maps.metallic = "bricks_ao.png"; // any grey map will do
     m_material.maps.ao = "bricks_ao.png";
@@ -330,6 +394,12 @@ void ExporterTest::unityPacking() {
     const std::string note = *readTextFile(path("out/bricks_Unity.txt"));
     QVERIFY2(note.find("Pixel displacement") != std::string::npos, note.c_str());
     QVERIFY2(note.find("Minimum Steps = 8, Maximum Steps = 32") != std::string::npos, note.c_str());
+    // HDRP's depth depends on the primitive size: the note names the settings; no stray line.
+    QVERIFY2(note.find("Primitive Length = Primitive Width = the tile's size in metres") !=
+                 std::string::npos,
+             note.c_str());
+    QVERIFY2(note.find("Lock with height map tiling rate on") != std::string::npos, note.c_str());
+    QVERIFY2(note.find("(height scale)") == std::string::npos, note.c_str());
 }
 
 void ExporterTest::engineBakesNormalsWithoutANormalMap() {

@@ -4,6 +4,7 @@
 
 #include "parallax/image/ImageFile.h"
 
+#include <OpenImageIO/imageio.h>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
@@ -27,6 +28,7 @@ private slots:
     void tooLarge();
     void outOfRangeFloat();
     void missingChannel();
+    void alphaOnlyExrNeedsTheAlphaChannel();
 
 private:
     std::string path(const char* name) const { return m_dir.filePath(name).toStdString(); }
@@ -201,6 +203,30 @@ void HeightFieldLoaderTest::missingChannel() {
     const auto r = loadHeightField(file, options);
     QVERIFY(!r.ok());
     QVERIFY(r.error().message.find("1 channel") != std::string::npos);
+}
+
+// An EXR whose only channel is "A" (a mask exported alone): read as red by default it would
+// silently be the alpha; it is refused with the option that reads it.
+void HeightFieldLoaderTest::alphaOnlyExrNeedsTheAlphaChannel() {
+    const std::string file = path("mask.exr");
+    OIIO::ImageSpec spec(2, 1, 1, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"A"};
+    spec.alpha_channel = 0;
+    auto out = OIIO::ImageOutput::create(file);
+    QVERIFY(out && out->open(file, spec));
+    const float texels[2] = {0.25f, 0.75f};
+    QVERIFY(out->write_image(OIIO::TypeDesc::FLOAT, texels));
+    QVERIFY(out->close());
+    const auto refused = loadHeightField(file);
+    QVERIFY(!refused.ok());
+    QCOMPARE(QString::fromStdString(refused.error().message),
+             QString::fromStdString(file + ": the image's only channel is alpha (A): say "
+                                           "--channel alpha to read the height from it"));
+    HeightLoadOptions load;
+    load.channel = HeightChannel::Alpha;
+    const auto alpha = loadHeightField(file, load);
+    QVERIFY(alpha.ok());
+    QCOMPARE(alpha->at(1, 0), 0.75f);
 }
 
 QTEST_APPLESS_MAIN(HeightFieldLoaderTest)

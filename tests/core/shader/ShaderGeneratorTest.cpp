@@ -250,6 +250,11 @@ void ShaderGeneratorTest::compilerLogsNameTheFile() {
              std::string("shaders/trace/pom.glsl:12(2): error: `foo' undeclared"));
     QCOMPARE(mapCompilerLog("0:5(2): error", sources),
              std::string("(generated header):5(2): error"));
+    // Numbers too long for any integer type: left as they are, nothing thrown.
+    const std::string huge = "0:123456789012345678901234567890(2): error; 98765432109876543210:4";
+    QCOMPARE(mapCompilerLog(huge, sources), huge);
+    QCOMPARE(mapCompilerLog("2:99999999999999999999999999(7): x", sources),
+             std::string("2:99999999999999999999999999(7): x"));
 }
 
 void ShaderGeneratorTest::invalidKeysAreRefused() {

@@ -3,6 +3,7 @@
 
 #include "TestSupport.h"
 #include "parallax/sample/ProceduralMaps.h"
+#include "parallax/trace/ParallaxBound.h"
 #include "parallax/trace/TraceScene.h"
 
 #include <QtTest>
@@ -19,6 +20,7 @@ private slots:
     void scaleZeroCostsOneFetch();
     void farFromOriginKeepsPrecision();
     void nonFiniteParallaxIsBounded();
+    void grazingParallaxKeepsItsDirection();
 };
 
 namespace {
@@ -79,7 +81,9 @@ void StabilityTest::extremeCases() {
     for (const TechniqueInfo& ti : allTechniques()) {
         auto tracer = test::makeTracer(field, mode, ti.id, c.scale);
         QVERIFY(tracer.ok());
-        const long long cap = fetchCap(ti.id, ti.defaults);
+        const long long cap =
+            fetchCap(ti.id, ti.defaults,
+                     rayCellBound(parallaxVector(c.scale, c.polar, c.azimuth), c.width, c.height));
         for (const TraceResult& r : traceScene(*tracer, scene)) {
             QVERIFY2(std::isfinite(r.u) && std::isfinite(r.v) && std::isfinite(r.t),
                      ti.name.data());
@@ -130,6 +134,29 @@ void StabilityTest::nonFiniteParallaxIsBounded() {
                      ti.name.data());
         }
     }
+}
+
+// Scale 100 at 89.99 degrees asks for |P| = 5.7e5 uv: the bound shortens it to 1e4 along the same
+// azimuth (35 degrees, not the 45 a per-component clamp made of it) and says so.
+void StabilityTest::grazingParallaxKeepsItsDirection() {
+    const glm::vec2 P = parallaxVector(100.0f, 89.99, 35);
+    const BoundedParallax b = boundParallax(P);
+    QVERIFY(!b.note.empty());
+    QVERIFY2(b.note.find("5.73e+05") != std::string::npos, b.note.c_str());
+    QVERIFY(std::abs(std::hypot(b.P.x, b.P.y) - 1.0e4) < 1.0);
+    QVERIFY(std::abs(std::atan2(b.P.y, b.P.x) * 180.0 / 3.14159265358979 - 35.0) < 1e-4);
+    QVERIFY(boundParallax(parallaxVector(0.1f, 80, 35)).note.empty());
+    QCOMPARE(boundParallax(glm::vec2(3.0f, -4.0f)).P, glm::vec2(3.0f, -4.0f));
+    // An infinite component keeps its sign's direction.
+    const glm::vec2 inf = boundParallax(glm::vec2(-INFINITY, 2.0f)).P;
+    QCOMPARE(inf, glm::vec2(-1.0e4f, 0.0f));
+    // The tracers use the bounded vector: the hit moves along the view's azimuth.
+    const HeightField field = makeProceduralMap(ProceduralMap::Noise, 16, 16);
+    auto tracer = test::makeTracer(field, WrapMode::Repeat, Technique::Pyramid, 100.0f);
+    QVERIFY(tracer.ok());
+    const TraceResult r = tracer->trace({0.5, 0.5}, P);
+    QVERIFY(r.t > 0.0f);
+    QVERIFY(std::abs(std::atan2(r.v - 0.5, r.u - 0.5) * 180.0 / 3.14159265358979 - 35.0) < 1e-3);
 }
 
 QTEST_APPLESS_MAIN(StabilityTest)

@@ -1,9 +1,10 @@
 #pragma once
 // Brute-force cone bakers: every cell of the bilinear surface, ring by ring around the apex until
 // no farther cell can narrow the cone (O(N^4) at worst). They are the oracles the fast bakers are
-// tested against and the baseline of the benchmarks. Each cell's bound is as tight as the
-// definition allows: exact for the cells around the apex, and within a relative 1e-4 of the
-// exact minimum (from below) elsewhere. Not post-processed or quantised.
+// tested against and the baseline of the benchmarks. Each cell's bound is exact for the cells
+// around the apex and, elsewhere, at most a relative 1e-3 below the exact minimum for conservative
+// cones and 3e-2 for relaxed ones (kOracleTolerance, kRelaxedTolerance in ConeCells.h; never
+// above it). Not post-processed or quantised.
 
 #include "parallax/bake/ConeMap.h"
 #include "parallax/heightfield/HeightField.h"

@@ -1,11 +1,12 @@
 #pragma once
 // The maximum mipmap the `pyramid` technique walks (docs/cone-maps.md §4). Level 0 holds one value
-// per cell, the max of its four corner texels; level L+1 the max of up to four children, sizes
-// rounded up so odd sizes lose nothing.
+// per cell, the max of its four corner texels; the levels above as maxPyramid builds them
+// (MaxLevel.h: sizes rounded up so odd sizes lose nothing).
 //   repeat: W x H cells, cell (i, j) spans texels i..i+1 mod W and j..j+1 mod H;
 //   clamp: (W+1) x (H+1) cells, index i+1 for cell i = -1..W-1 (the outer ones are the half-texel
 //          border strips, whose corners clamp to the edge texels).
 
+#include "parallax/bake/MaxLevel.h"
 #include "parallax/heightfield/HeightField.h"
 #include "parallax/heightfield/WrapMode.h"
 #include "parallax/image/Image.h"
@@ -25,10 +26,7 @@ public:
     int top() const { return levels() - 1; }
     int width(int level) const { return m_levels[level].width; }
     int height(int level) const { return m_levels[level].height; }
-    float at(int level, int x, int y) const {
-        const Level& l = m_levels[level];
-        return l.values[static_cast<std::size_t>(y) * l.width + x];
-    }
+    float at(int level, int x, int y) const { return m_levels[level].at(x, y); }
 
     // One level as a one-channel image, for inspection and export.
     Image levelImage(int level) const;
@@ -38,13 +36,8 @@ public:
     int atlasRow(int level) const;
 
 private:
-    struct Level {
-        int width = 0;
-        int height = 0;
-        std::vector<float> values;
-    };
     WrapMode m_wrap = WrapMode::Repeat;
-    std::vector<Level> m_levels;
+    std::vector<MaxLevel> m_levels;
 };
 
 } // namespace px

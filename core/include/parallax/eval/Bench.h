@@ -50,11 +50,14 @@ struct GpuFrameTiming {
 // the error's sentence as the reason.
 using GpuFrameTimer = std::function<Result<GpuFrameTiming>(const GpuFrameRequest&)>;
 
+// The view angles the bench measures unless told otherwise (CLI, editor and README alike).
+inline const std::vector<double> kBenchPolarDeg{30.0, 60.0, 80.0, 87.0};
+
 struct BenchConfig {
     std::vector<BenchMap> maps;
     WrapMode wrap = WrapMode::Repeat;
     std::vector<BenchSetting> settings; // e.g. qualitySweep() of each technique
-    std::vector<double> polarDeg{30.0, 60.0, 80.0, 87.0};
+    std::vector<double> polarDeg = kBenchPolarDeg;
     double azimuthDeg = 35.0;
     std::vector<float> scales{0.05f, 0.1f};
     int rays = 128; // R: R x R rays per map, scale and angle
@@ -98,5 +101,10 @@ Status validate(const BenchConfig& config);
 // on each map and scale. Errors: validate()'s, a tracer that cannot be created (naming the map),
 // evaluationCancelled().
 Result<BenchReport> runBench(const BenchConfig& config, const EvalControl& control = {});
+
+// A row (per condition or pooled) of a technique documented exact (isDocumentedExact) with a ray
+// further than kExactTexels from the reference fails: one sentence per such row, naming the
+// setting, the condition and the worst error. Empty when every documented promise held.
+std::vector<std::string> exactnessFailures(const BenchReport& report);
 
 } // namespace px

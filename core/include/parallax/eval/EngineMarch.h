@@ -16,7 +16,8 @@
 #include "parallax/Result.h"
 #include "parallax/eval/EvalControl.h"
 #include "parallax/eval/Recommendation.h"
-#include "parallax/heightfield/Sampler.h"
+#include "parallax/heightfield/HeightField.h"
+#include "parallax/heightfield/WrapMode.h"
 #include "parallax/trace/Tracer.h"
 
 #include <glm/vec2.hpp>
@@ -35,8 +36,8 @@ float godotLayerCount(const EngineLayers& layers, float cosPolar);
 
 // One ray of Godot's deep parallax. P is Godot's offset at full depth in uv units (s sin(polar)
 // along the view's azimuth; engineParallaxVector()); the hit's t is its depth along P.
-TraceResult godotDeepParallax(Sampler& heights, glm::dvec2 uv0, glm::vec2 P, float cosPolar,
-                              const EngineLayers& layers);
+TraceResult godotDeepParallax(const HeightField& field, WrapMode wrap, glm::dvec2 uv0, glm::vec2 P,
+                              float cosPolar, const EngineLayers& layers);
 
 // Godot's P for the canonical scene's angles: s sin(polar) (cos azimuth, sin azimuth).
 glm::vec2 godotParallaxVector(float scale, double polarDeg, double azimuthDeg);

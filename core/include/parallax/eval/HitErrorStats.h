@@ -15,15 +15,20 @@ namespace px {
 // the same one (the "wrong surface" count of the bench).
 inline constexpr double kWrongSurfaceTexels = 2.0;
 
+// A technique documented exact (`cone`, `pyramid`, `exact`) keeps every ray within this of the
+// reference: a bench or stability row where one ray is further fails.
+inline constexpr double kExactTexels = 0.05;
+bool isDocumentedExact(Technique technique);
+
 struct HitErrorStats {
     std::int64_t rays = 0;
     std::int64_t invalid = 0;      // non-finite u, v or t, or t outside [0, 1]: no error taken
     std::int64_t wrongSurface = 0; // valid rays with error > kWrongSurfaceTexels
     double meanError = 0.0;        // texels, over valid rays
     double p99Error = 0.0;         // nearest-rank 99th percentile, texels
-    double maxError = 0.0;
-    double meanFetches = 0.0; // over all rays
-    double p99Fetches = 0.0;  // nearest-rank 99th percentile
+    double maxError = 0.0;         // over valid rays: every ray, not a percentile
+    double meanFetches = 0.0;      // over all rays
+    double p99Fetches = 0.0;       // nearest-rank 99th percentile
     int maxFetches = 0;
 };
 
@@ -34,6 +39,8 @@ public:
     // `hits` and `reference` are the same rays in the same order; W x H is the map's size.
     void add(std::span<const TraceResult> hits, std::span<const TraceResult> reference, int width,
              int height);
+    // One ray whose error is already measured, in texels (the editor compares rendered hits).
+    void addError(double errorTexels, int fetches);
     HitErrorStats stats() const;
 
 private:

@@ -20,7 +20,7 @@ struct BenchSetting {
     bool isDefault = false;
 };
 
-// "layers 8-32", "steps 24, binary 8", ...: only the parameters the technique reads.
+// "layers 8-32", "steps 24", "layers 8-32, binary 6", ...: only the parameters the technique reads.
 std::string settingLabel(Technique technique, const TraceParams& params);
 
 // The sweep of one technique, cheapest first.

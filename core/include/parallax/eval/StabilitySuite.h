@@ -62,7 +62,8 @@ struct StabilityRow {
 
 struct StabilityOptions {
     std::vector<std::string> cases; // names to run; empty: all
-    int rays = 32;                  // R x R rays per case
+    int rays = 32;                  // R x R rays per case (and view)
+    unsigned seed = 1;              // of the maps that have random texels
 };
 
 // Checks hits against the reference under a bound; `figure` names the measured value and the

@@ -7,6 +7,7 @@
 #include "parallax/eval/Bench.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -18,12 +19,15 @@ enum class CostAxis { Fetches, CpuTime, GpuTime };
 std::string_view costAxisTitle(CostAxis axis); // "mean fetches per ray", ...
 
 struct WorkPrecisionPoint {
-    double cost = 0.0;      // on the panel's cost axis
-    double error = 0.0;     // p99 hit error in texels, as measured
-    double plotError = 0.0; // max(error, the chart's floor): what a log axis can show
-    std::size_t row = 0;    // index into BenchReport::pooled
-    BenchSetting setting;   // what choosing this point applies
-    bool onFront = false;   // no other point of the panel is both cheaper and more accurate
+    double cost = 0.0;             // on the panel's cost axis
+    double error = 0.0;            // p99 hit error in texels, as measured
+    double plotError = 0.0;        // max(error, the chart's floor): what a log axis can show
+    double maxError = 0.0;         // the worst ray, texels: p99 hides a few rays far off
+    double plotMaxError = 0.0;     // max(maxError, the chart's floor)
+    std::int64_t wrongSurface = 0; // rays more than kWrongSurfaceTexels off
+    std::size_t row = 0;           // index into BenchReport::pooled
+    BenchSetting setting;          // what choosing this point applies
+    bool onFront = false;          // no other point of the panel is both cheaper and more accurate
 };
 
 struct WorkPrecisionSeries {
@@ -69,10 +73,5 @@ struct WorkPrecisionChart {
 // Errors below `errorFloor` texels (exact, pyramid) are drawn at the floor. Points whose cost is
 // not positive (no log position) are left out.
 WorkPrecisionChart makeWorkPrecisionChart(const BenchReport& report, double errorFloor = 1e-4);
-
-// The point nearest to (cost, error) in log-log distance, if within `maxDecades` of it: what a
-// click on the panel picked.
-std::optional<PointRef> pickPoint(const WorkPrecisionPanel& panel, double cost, double error,
-                                  double maxDecades = 0.1);
 
 } // namespace px

@@ -5,7 +5,10 @@
 //
 // Replacing an existing folder needs `force`, and even then only a folder that is empty or that a
 // previous export wrote (it holds the marker file kExportMarker): --force must never wipe a folder
-// of someone's other files because its name was mistyped.
+// of someone's other files because its name was mistyped. An earlier export is updated in place:
+// each new file is renamed over its old self, files the earlier export listed and this one does
+// not write are removed, and every other file (Unity .meta, Godot .import, a user's .mat) is kept,
+// since engines keep their references to the textures in those files.
 
 #include "parallax/Result.h"
 
@@ -35,18 +38,29 @@ public:
     // Records a file as part of the export (listed in the marker, returned by commit()).
     void add(const std::string& name) { m_files.push_back(name); }
 
-    // Writes the marker, then swaps the staging folder into place (the previous folder, if any,
-    // is removed afterwards). On failure the target is as it was.
-    Result<std::vector<std::string>> commit(std::string_view description);
+    struct Committed {
+        std::vector<std::string> files; // written, in order
+        std::vector<std::string> kept;  // files of an earlier export's folder that no export wrote
+    };
+    // Writes the marker, then moves the staging folder into place, or its files into an earlier
+    // export (see above). On failure the target is as it was.
+    Result<Committed> commit(std::string_view description);
 
     const std::filesystem::path& target() const { return m_target; }
 
+    // An error about a staged file, told about the file the user will see: the hidden staging
+    // folder's path replaced by the target's.
+    Error asTarget(const Error& error) const;
+
 private:
     ExportFolder() = default;
+    Result<Committed> updateInPlace();
     std::filesystem::path m_target;
     std::filesystem::path m_staging;
     std::vector<std::string> m_files;
-    bool m_replace = false; // the target exists and is replaced
+    int m_stagingHandle = -1;               // registered for removal on Ctrl-C (Temporaries.h)
+    mutable std::vector<int> m_fileHandles; // the files in it, likewise
+    bool m_replace = false;                 // the target exists and is replaced
     bool m_done = false;
 };
 

@@ -28,6 +28,7 @@ struct ExportResult {
     std::string folder;
     std::vector<std::string> files; // written, in order (names inside the folder)
     std::vector<std::string> notes; // things the user should know (e.g. a map baked on the way)
+    std::vector<std::string> kept;  // files of an earlier export's folder left as they were
 };
 
 // Loads the maps the target needs (paths relative to `materialFile`), converts them (bit depth,

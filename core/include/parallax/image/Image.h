@@ -11,6 +11,7 @@ struct Image {
     int height = 0;
     int channels = 0;
     std::vector<float> pixels; // row-major, interleaved channels
+    bool alphaOnly = false;    // one channel, which the file names alpha (an EXR's "A")
 
     Image() = default;
     Image(int w, int h, int c)

@@ -1,6 +1,8 @@
 #pragma once
 // Every file the project writes goes to a temporary name in the target's folder and is renamed
 // over the target only once complete (docs/conventions.md §6): a failure never leaves half a file.
+// Every step is checked (each write, fsync, close) before the rename, so a full disk is an
+// error naming the target and the reason, never a truncated file reported as success.
 
 #include "parallax/Result.h"
 
@@ -10,16 +12,25 @@
 
 namespace px {
 
-// A hidden name beside `target`, unique to this process and call.
+// A hidden name beside `target`, unique to this process and call (".NAME.tmpPID-N").
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 
 // Renames `temp` over `target`; on failure removes `temp` and says why.
 Status commitTemporary(const std::filesystem::path& temp, const std::filesystem::path& target);
 
-// Writes `contents` to `path` atomically.
+// Writes `contents` to `path` atomically: temporary file, checked writes, fsync, rename.
+// Removes the leftovers of killed runs on the same target first (see Temporaries.h).
+// Test hook: PX_TEST_FAIL_WRITE_AT=N makes the write fail with ENOSPC once N bytes are written
+// (the fault suite's full disk where it cannot mount a small tmpfs).
+Status writeFileAtomically(const std::string& path, std::string_view contents);
+
+// Writes `contents` to `path` atomically (text files: JSON, CSV, shaders, notes).
 Status writeTextFile(const std::string& path, std::string_view contents);
 
 // Reads a whole file; errors name it.
 Result<std::string> readTextFile(const std::string& path);
+
+// The system's reason for errno `code`, e.g. "No space left on device".
+std::string systemReason(int code);
 
 } // namespace px

@@ -22,6 +22,13 @@ enum class ProceduralMap {
     Step,    // left half 0, right half 1: a vertical step
     Cracks,  // flat 1 with thin one-texel cracks down to 0
     Flat,    // constant `level`
+    // Made to break tracers (AdversarialMaps.cpp), positions and heights from the seed:
+    SpikeFlat, // a low flat along each row with one single-texel spike to the top
+    Walls,     // one-texel walls every second column (the Nyquist rate), random heights
+    Treads,    // stairs along u with long treads (8 to 32 texels)
+    Pits,      // the top pierced by isolated one-texel pits to the bottom
+    Terraces,  // smooth hills cut into six terraces, 8-bit quantised
+    Outliers,  // gentle low noise and six single texels at the top
 };
 
 std::span<const std::string_view> proceduralMapNames();

@@ -74,13 +74,4 @@ std::vector<VariantKey> allVariants();
 // The key a material asks for with the maps it actually has (paths non-empty).
 VariantKey variantFor(const Material& material, ShaderOutput output = ShaderOutput::Color);
 
-// The names the command line and the variant names use ("none", "map", "central", "sobel";
-// "blinn-phong", "metallic-roughness"). In their own namespace: the material file has its own.
-namespace shader {
-std::optional<NormalSource> parseNormalSource(std::string_view name);
-std::string_view normalSourceName(NormalSource source);
-std::optional<LightingModel> parseLightingModel(std::string_view name);
-std::string_view lightingModelName(LightingModel model);
-} // namespace shader
-
 } // namespace px

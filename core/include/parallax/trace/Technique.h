@@ -26,7 +26,7 @@ enum class Technique {
 struct TraceParams {
     int minLayers = 8;   // layers looking straight down (the tutorials' quality range)
     int maxLayers = 32;  // layers at grazing angles
-    int binarySteps = 6; // relief and relaxed-cone refinement halvings
+    int binarySteps = 6; // relief's refinement halvings
     int secantSteps = 3; // secant refinement steps
     int maxSteps = 64;   // hard cap on the main loop: cone steps, cells, pyramid nodes
 };
@@ -51,8 +51,10 @@ const TechniqueInfo& info(Technique technique);
 std::optional<Technique> parseTechnique(std::string_view name);
 
 // The most fetches one ray may cost with these parameters: every kernel loop is capped, and this
-// is the contract the stability tests hold them to.
-long long fetchCap(Technique technique, const TraceParams& params);
+// is the contract the stability tests hold them to. `rayCells` bounds the cells the ray crosses
+// (rayCellBound() in TraceScene.h): `cone`, `relaxed-cone` and `pyramid` finish a ray their cap
+// or their last step leaves open with an exact walk over those cells.
+long long fetchCap(Technique technique, const TraceParams& params, long long rayCells);
 
 // The refinement steps the kernel uses for this technique (binary or secant, else 0).
 int refineSteps(Technique technique, const TraceParams& params);

@@ -21,6 +21,10 @@ struct TraceScene {
 // P = s tan(polar) (cos azimuth, sin azimuth).
 glm::vec2 parallaxVector(float heightScale, double polarDeg, double azimuthDeg);
 
+// At most how many cells of a W x H map a ray with (bounded) parallax P crosses: the length of
+// the exact walks that finish `cone`, `relaxed-cone` and `pyramid` (fetchCap()).
+long long rayCellBound(glm::vec2 P, int width, int height);
+
 // Ray (i, j) enters at ((i + 0.5)/R, (j + 0.5)/R) + offset; i the column, j the row.
 glm::dvec2 rayOrigin(const TraceScene& scene, int i, int j);
 

@@ -1,10 +1,10 @@
-#include "MapKind.h"
+#include "parallax/material/MapKind.h"
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 
-namespace px::studio {
+namespace px {
 
 std::string_view mapKey(MapKind kind) {
     switch (kind) {
@@ -125,14 +125,15 @@ bool isSeparator(char c) {
 } // namespace
 
 std::optional<SuffixMatch> mapKindFromFileName(const std::string& fileName) {
-    const std::string stem = lower(std::filesystem::path(fileName).stem().string());
+    const std::string original = std::filesystem::path(fileName).stem().string();
+    const std::string stem = lower(original);
     for (const Suffix& s : kSuffixes) {
         if (stem.size() < s.text.size() || !stem.ends_with(s.text))
             continue;
         // The suffix must be a whole word: "wall_disp", "disp", not "grasp" for "_sp".
         const std::size_t start = stem.size() - s.text.size();
         if (start == 0 || isSeparator(stem[start - 1]))
-            return SuffixMatch{s.kind, s.depth};
+            return SuffixMatch{s.kind, s.depth, original.substr(0, start == 0 ? 0 : start - 1)};
     }
     return std::nullopt;
 }
@@ -147,4 +148,4 @@ bool isImageFileName(const std::string& fileName) {
     return false;
 }
 
-} // namespace px::studio
+} // namespace px

@@ -1,6 +1,6 @@
 #pragma once
-// The maps a material can hold, as the editor lists them, and how files are recognised as one of
-// them by their suffix (docs/conventions.md §6).
+// The maps a material can hold, as the editor and the import list them, and how files are
+// recognised as one of them by their suffix (docs/conventions.md §6).
 
 #include "parallax/material/Material.h"
 
@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-namespace px::studio {
+namespace px {
 
 enum class MapKind { Albedo, Height, Normal, Cone, RelaxedCone, Ao, Roughness, Metallic };
 
@@ -27,11 +27,12 @@ const std::string& mapPath(const MaterialMaps& maps, MapKind kind);
 // depth map (height, white = deep). Case-insensitive; the extension is ignored.
 struct SuffixMatch {
     MapKind kind;
-    bool depth = false; // white = deep: load inverted
+    bool depth = false;  // white = deep: load inverted
+    std::string setName; // the name without its suffix ("wall" for "wall_disp"); may be empty
 };
 std::optional<SuffixMatch> mapKindFromFileName(const std::string& fileName);
 
 // True for extensions the image reader handles (png, jpg, tif, exr, bmp, tga, hdr).
 bool isImageFileName(const std::string& fileName);
 
-} // namespace px::studio
+} // namespace px

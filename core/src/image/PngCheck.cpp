@@ -1,0 +1,65 @@
+#include "PngCheck.h"
+
+#include <array>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace px {
+
+namespace {
+
+constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
+std::uint32_t crc32(const unsigned char* data, std::size_t size) {
+    static const std::array<std::uint32_t, 256> table = [] {
+        std::array<std::uint32_t, 256> t{};
+        for (std::uint32_t n = 0; n < 256; ++n) {
+            std::uint32_t c = n;
+            for (int k = 0; k < 8; ++k)
+                c = (c & 1u) != 0 ? 0xedb88320u ^ (c >> 1) : c >> 1;
+            t[n] = c;
+        }
+        return t;
+    }();
+    std::uint32_t crc = 0xffffffffu;
+    for (std::size_t i = 0; i < size; ++i)
+        crc = table[(crc ^ data[i]) & 0xffu] ^ (crc >> 8);
+    return ~crc;
+}
+
+std::uint32_t big32(const unsigned char* p) {
+    return static_cast<std::uint32_t>(p[0]) << 24 | static_cast<std::uint32_t>(p[1]) << 16 |
+           static_cast<std::uint32_t>(p[2]) << 8 | static_cast<std::uint32_t>(p[3]);
+}
+
+} // namespace
+
+Status checkPngStructure(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, data))
+        return success();
+    std::size_t at = 8;
+    while (at + 12 <= bytes.size()) {
+        const std::uint32_t length = big32(data + at);
+        const std::string type = bytes.substr(at + 4, 4);
+        if (length > bytes.size() - at - 12)
+            return fileError(path, "the file is truncated (its " + type +
+                                       " chunk runs past the end, "
+                                       "at byte " +
+                                       std::to_string(bytes.size()) + ")");
+        if (crc32(data + at + 4, length + 4) != big32(data + at + 8 + length))
+            return fileError(path, "the file is damaged (its " + type +
+                                       " chunk does not match its checksum)");
+        if (type == "IEND")
+            return success();
+        at += 12 + length;
+    }
+    return fileError(path, "the file is truncated (it ends at byte " +
+                               std::to_string(bytes.size()) + " without the PNG's IEND chunk)");
+}
+
+} // namespace px

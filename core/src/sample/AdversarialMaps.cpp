@@ -1,0 +1,106 @@
+#include "AdversarialMaps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace px {
+namespace {
+
+// Stairs climbing along u: treads of 8 to 32 texels, the last one dropping back to the first.
+void treads(HeightField& f, std::mt19937& random) {
+    std::uniform_int_distribution<int> length(8, 32);
+    std::vector<int> tread(static_cast<std::size_t>(f.width));
+    int steps = 0;
+    for (int x = 0; x < f.width;) {
+        const int end = std::min(f.width, x + length(random));
+        std::fill(tread.begin() + x, tread.begin() + end, steps++);
+        x = end;
+    }
+    for (int y = 0; y < f.height; ++y) {
+        for (int x = 0; x < f.width; ++x)
+            f.at(x, y) = steps > 1 ? static_cast<float>(tread[x]) / (steps - 1) : 0.5f;
+    }
+}
+
+// Smooth value noise from a coarse random lattice (bilinear, 8 lattice cells across).
+float latticeNoise(const std::vector<float>& lattice, int cells, float u, float v) {
+    const float x = u * cells, y = v * cells;
+    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+    const float fx = x - x0, fy = y - y0;
+    auto at = [&](int i, int j) {
+        return lattice[static_cast<std::size_t>(j % cells) * static_cast<std::size_t>(cells) +
+                       static_cast<std::size_t>(i % cells)];
+    };
+    return (at(x0, y0) * (1 - fx) + at(x0 + 1, y0) * fx) * (1 - fy) +
+           (at(x0, y0 + 1) * (1 - fx) + at(x0 + 1, y0 + 1) * fx) * fy;
+}
+
+} // namespace
+
+bool isAdversarial(ProceduralMap kind) {
+    return kind >= ProceduralMap::SpikeFlat;
+}
+
+HeightField makeAdversarialMap(ProceduralMap kind, int width, int height, unsigned seed) {
+    HeightField f(width, height, 0.0f);
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    auto texel = [&](int w) { return std::uniform_int_distribution<int>(0, w - 1)(random); };
+    const int area = width * height;
+    switch (kind) {
+    case ProceduralMap::SpikeFlat: {
+        // A low flat along each row, and somewhere on it one texel at the top.
+        const float floor = 0.1f * uniform(random);
+        std::fill(f.texels.begin(), f.texels.end(), floor);
+        for (int y = 0; y < height; ++y)
+            f.at(texel(width), y) = 1.0f;
+        break;
+    }
+    case ProceduralMap::Walls:
+        // One-texel walls every second column (the Nyquist rate), each its own height.
+        for (int x = 0; x < width; x += 2) {
+            const float wall = 0.6f + 0.4f * uniform(random);
+            for (int y = 0; y < height; ++y)
+                f.at(x, y) = wall;
+        }
+        break;
+    case ProceduralMap::Treads:
+        treads(f, random);
+        break;
+    case ProceduralMap::Pits:
+        // The top, pierced by a few isolated one-texel pits to the bottom.
+        std::fill(f.texels.begin(), f.texels.end(), 1.0f);
+        for (int k = 0; k < std::max(1, area / 200); ++k)
+            f.at(texel(width), texel(height)) = 0.0f;
+        break;
+    case ProceduralMap::Terraces: {
+        // Smooth hills cut into six flat terraces, stored as 8 bits would store them.
+        const int cells = 8;
+        std::vector<float> lattice(cells * cells);
+        for (float& v : lattice)
+            v = uniform(random);
+        for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x) {
+                const float n =
+                    latticeNoise(lattice, cells, (x + 0.5f) / width, (y + 0.5f) / height);
+                const float terrace = std::min(5.0f, std::floor(n * 6.0f)) / 5.0f;
+                f.at(x, y) = std::round(terrace * 255.0f) / 255.0f;
+            }
+        }
+        break;
+    }
+    case ProceduralMap::Outliers:
+        // Gentle low texels, and a handful at the top: the map's maximum is a few texels.
+        for (float& h : f.texels)
+            h = 0.15f * uniform(random);
+        for (int k = 0; k < 6; ++k)
+            f.at(texel(width), texel(height)) = 1.0f;
+        break;
+    default:
+        break;
+    }
+    return f;
+}
+
+} // namespace px

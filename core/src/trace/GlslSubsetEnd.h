@@ -1,0 +1,2 @@
+// Closes the region GlslSubsetBegin.h opened.
+#pragma GCC diagnostic pop

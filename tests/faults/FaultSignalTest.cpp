@@ -1,0 +1,193 @@
+// Ctrl-C, SIGTERM and SIGKILL at several moments of every kind of write: the command stops at
+// once, removes its temporary files and folders, leaves the previous output as it was and exits
+// 130; what a SIGKILL leaves behind is removed by the next run on the same target. The moments
+// are exact (PX_TEST_RAISE=SIGNAL:POINT raises the signal in the process at that point), and one
+// case sends SIGINT from outside during a long bake and measures how soon the process is gone.
+
+#include "FaultSupport.h"
+
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <csignal>
+
+using namespace px::faults;
+
+class FaultSignalTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void cleanupTestCase() { printTally("signals"); }
+    void interruptAtAMoment_data();
+    void interruptAtAMoment();
+    void interruptDuringAnUpdateFinishesIt();
+    void killedRunsDebrisRemovedByTheNext_data();
+    void killedRunsDebrisRemovedByTheNext();
+    void ctrlCFromOutsideStopsAtOnce();
+
+private:
+    void prepare(const QString& folder);
+    QTemporaryDir m_temp;
+};
+
+void FaultSignalTest::initTestCase() {
+    QVERIFY(m_temp.isValid());
+}
+
+void FaultSignalTest::prepare(const QString& folder) {
+    QDir(folder).removeRecursively();
+    QDir().mkpath(folder);
+    QCOMPARE(runCli(folder, {"sample", "noise", "--size", "32", "--out", "h.png"}).status, 0);
+    for (const char* previous : {"out.png", "out.csv"}) {
+        QFile file(folder + "/" + previous);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QByteArray("the previous ") + previous + "\n");
+    }
+    QCOMPARE(
+        runCli(folder, {"export", "--height", "h.png", "--format", "godot", "--out", "earlier"})
+            .status,
+        0);
+    QFile meta(folder + "/earlier/h.png.import"); // an engine's file beside the export
+    QVERIFY(meta.open(QIODevice::WriteOnly));
+    meta.write("uid://keep");
+}
+
+void FaultSignalTest::interruptAtAMoment_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("signal");
+    QTest::addColumn<QString>("point");
+    const QList<QPair<QString, QStringList>> commands = {
+        {"bake", {"bake", "relaxed-cone", "--height", "h.png", "--out", "out.png"}},
+        {"sample", {"sample", "bricks", "--size", "64", "--out", "out.png"}},
+        {"trace", {"trace", "--height", "h.png", "--rays", "8", "--out", "out.csv"}},
+        {"export", {"export", "--height", "h.png", "--format", "unity", "--out", "fresh"}},
+        {"export --force",
+         {"export", "--height", "h.png", "--format", "godot", "--out", "earlier", "--force"}},
+    };
+    for (const auto& [name, args] : commands) {
+        for (const char* signal : {"INT", "TERM"}) {
+            for (const char* point : {"write", "commit", "export-commit"}) {
+                if (QString(point) == "export-commit" && !name.startsWith("export"))
+                    continue;
+                QTest::newRow(qPrintable(name + " SIG" + signal + " at " + point))
+                    << args << QString(signal) << QString(point);
+            }
+        }
+    }
+}
+
+void FaultSignalTest::interruptAtAMoment() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, signal);
+    QFETCH(QString, point);
+    const QString folder = m_temp.path() + "/moment";
+    prepare(folder);
+    const QString said = signal == "INT" ? "interrupted \\(SIGINT\\)" : "terminated \\(SIGTERM\\)";
+    PX_EXPECT_CLEAN_FAILURE(folder, args, {"PX_TEST_RAISE=" + signal + ":" + point}, 130,
+                            "error:", said + ": stopped, temporary files removed");
+}
+
+// The few renames of an in-place update are not interrupted half-way: the signal waits for the
+// last one, so the folder holds the whole new export (and the engine's files), never a mix.
+void FaultSignalTest::interruptDuringAnUpdateFinishesIt() {
+    const QString folder = m_temp.path() + "/update";
+    prepare(folder);
+    const auto before = snapshot(folder);
+    const CliRun run = runCli(folder,
+                              {"export", "--height", "h.png", "--format", "godot", "--invert",
+                               "--out", "earlier", "--force"},
+                              {"PX_TEST_RAISE=INT:export-update"});
+    QCOMPARE(run.status, 130);
+    const auto after = snapshot(folder);
+    QCOMPARE(after.value("earlier/h.png.import"), QByteArray("uid://keep"));
+    const CliRun again = runCli(m_temp.path(), {"export", "--height", folder + "/h.png", "--format",
+                                                "godot", "--invert", "--out", "reference"});
+    QCOMPARE(again.status, 0);
+    for (const QString& name : snapshot(m_temp.path() + "/reference").keys()) {
+        if (name != ".parallax-export")
+            QCOMPARE(after.value("earlier/" + name),
+                     snapshot(m_temp.path() + "/reference").value(name));
+    }
+    QDir(m_temp.path() + "/reference").removeRecursively();
+    for (const QString& name : after.keys())
+        QVERIFY2(!name.startsWith("."), qPrintable("left behind: " + name));
+    record(run, true, false, 0);
+    Q_UNUSED(before);
+}
+
+void FaultSignalTest::killedRunsDebrisRemovedByTheNext_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("point");
+    QTest::addColumn<QString>("debris");
+    QTest::newRow("sample") << QStringList{"sample", "bricks", "--size", "64", "--out", "out.png"}
+                            << "write"
+                            << "^\\.out\\.png\\.tmp[0-9]+-[0-9]+$";
+    QTest::newRow("export") << QStringList{"export", "--height", "h.png", "--format",
+                                           "gltf",   "--out",    "fresh"}
+                            << "export-commit"
+                            << "^\\.fresh\\.export-tmp[0-9]+-[0-9]+/$";
+}
+
+void FaultSignalTest::killedRunsDebrisRemovedByTheNext() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, point);
+    QFETCH(QString, debris);
+    const QString folder = m_temp.path() + "/killed";
+    prepare(folder);
+    const auto before = snapshot(folder);
+    const CliRun killed = runCli(folder, args, {"PX_TEST_RAISE=KILL:" + point});
+    QVERIFY2(killed.signal != 0, qPrintable(killed.output)); // SIGKILL: nothing can clean up
+    QStringList left;
+    for (const QString& name : snapshot(folder).keys()) {
+        if (!before.contains(name))
+            left << name;
+    }
+    QVERIFY2(!left.filter(QRegularExpression(debris)).isEmpty(), qPrintable(left.join(' ')));
+    for (const QString& name : before.keys()) // the previous output is still whole
+        QCOMPARE(snapshot(folder).value(name), before.value(name));
+
+    const CliRun next = runCli(folder, args);
+    QCOMPARE(next.status, 0);
+    for (const QString& name : snapshot(folder).keys())
+        QVERIFY2(!name.contains(QRegularExpression(debris)), qPrintable("still there: " + name));
+    record(next, true, false, 0);
+}
+
+void FaultSignalTest::ctrlCFromOutsideStopsAtOnce() {
+    const QString folder = m_temp.path() + "/outside";
+    prepare(folder);
+    QCOMPARE(runCli(folder, {"sample", "noise", "--size", "1024", "--out", "big.png"}).status, 0);
+    const auto before = snapshot(folder);
+    QProcess process;
+    process.setWorkingDirectory(folder);
+    process.setProcessChannelMode(QProcess::MergedChannels);
+    process.start(QStringLiteral(PX_CLI_PATH),
+                  {"bake", "relaxed-cone", "--height", "big.png", "--out", "out.png"});
+    // The progress line appears once the bake has run for a second: then it is mid-bake.
+    QByteArray output;
+    while (!output.contains("baking relaxed-cone map:") && process.waitForReadyRead(60000))
+        output += process.readAll();
+    QVERIFY2(output.contains("baking relaxed-cone map:"), output.constData());
+    QElapsedTimer timer;
+    timer.start();
+    ::kill(static_cast<pid_t>(process.processId()), SIGINT);
+    QVERIFY(process.waitForFinished(10000));
+    const double seconds = static_cast<double>(timer.nsecsElapsed()) / 1e9;
+    output += process.readAll();
+    qInfo("SIGINT mid-bake: the process was gone %.3f s later", seconds);
+    QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(process.exitCode(), 130);
+    QVERIFY(output.contains("error: interrupted (SIGINT): stopped, temporary files removed"));
+    QCOMPARE(difference(before, snapshot(folder)), QString());
+    // A hang guard, not a speed target: the handler exits at once, so anything near a second
+    // means the signal was not acted on.
+    QVERIFY2(seconds < 0.5, qPrintable(QString::number(seconds)));
+    CliRun run;
+    run.status = 130;
+    record(run, true, false, 0);
+}
+
+QTEST_GUILESS_MAIN(FaultSignalTest)
+#include "FaultSignalTest.moc"

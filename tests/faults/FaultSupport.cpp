@@ -1,0 +1,123 @@
+#include "FaultSupport.h"
+
+#include <QDir>
+#include <QDirIterator>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QProcess>
+#include <QProcessEnvironment>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <sys/mount.h>
+
+namespace px::faults {
+
+CliRun runCli(const QString& folder, const QStringList& arguments, const QStringList& environment) {
+    QProcess process;
+    process.setWorkingDirectory(folder);
+    process.setProcessChannelMode(QProcess::MergedChannels);
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    for (const QString& entry : environment)
+        env.insert(entry.section('=', 0, 0), entry.section('=', 1));
+    process.setProcessEnvironment(env);
+    QElapsedTimer timer;
+    timer.start();
+    process.start(QStringLiteral(PX_CLI_PATH), arguments);
+    process.waitForFinished(300000);
+    CliRun run;
+    run.seconds = static_cast<double>(timer.nsecsElapsed()) / 1e9;
+    run.output = QString::fromUtf8(process.readAll());
+    if (process.exitStatus() == QProcess::CrashExit) {
+        // QProcess does not say which signal: a run ends by SIGKILL only where a test asked.
+        run.signal = -1;
+    } else {
+        run.status = process.exitCode();
+    }
+    return run;
+}
+
+QMap<QString, QByteArray> snapshot(const QString& folder) {
+    QMap<QString, QByteArray> entries;
+    QDirIterator it(folder, QDir::AllEntries | QDir::Hidden | QDir::System | QDir::NoDotAndDotDot,
+                    QDirIterator::Subdirectories);
+    const QDir root(folder);
+    while (it.hasNext()) {
+        const QString path = it.next();
+        QFile file(path);
+        const QString name = root.relativeFilePath(path);
+        if (it.fileInfo().isDir())
+            entries.insert(name + "/", QByteArray());
+        else if (file.open(QIODevice::ReadOnly))
+            entries.insert(name, file.readAll());
+    }
+    return entries;
+}
+
+QString difference(const QMap<QString, QByteArray>& before,
+                   const QMap<QString, QByteArray>& after) {
+    QStringList lines;
+    for (auto it = before.begin(); it != before.end(); ++it) {
+        if (!after.contains(it.key()))
+            lines << "removed: " + it.key();
+        else if (after.value(it.key()) != it.value())
+            lines << "changed: " + it.key();
+    }
+    for (auto it = after.begin(); it != after.end(); ++it) {
+        if (!before.contains(it.key()))
+            lines << "left behind: " + it.key();
+    }
+    return lines.join('\n');
+}
+
+Tally& tally() {
+    static Tally t;
+    return t;
+}
+
+void record(const CliRun& run, bool clearError, bool crashed, long long lost) {
+    Q_UNUSED(run);
+    Tally& t = tally();
+    ++t.cases;
+    t.clearErrors += clearError ? 1 : 0;
+    t.crashes += crashed ? 1 : 0;
+    t.bytesLost += lost;
+}
+
+long long bytesLost(const QMap<QString, QByteArray>& before,
+                    const QMap<QString, QByteArray>& after) {
+    long long lost = 0;
+    for (auto it = before.begin(); it != before.end(); ++it) {
+        if (!after.contains(it.key()) || after.value(it.key()) != it.value())
+            lost += it.value().size();
+    }
+    return lost;
+}
+
+void printTally(const char* suite) {
+    const Tally& t = tally();
+    std::printf("FAULTS %s: %d cases, %d clear errors, %d crashes, %lld bytes lost\n", suite,
+                t.cases, t.clearErrors, t.crashes, t.bytesLost);
+    std::fflush(stdout);
+}
+
+bool mountTmpfs(const QString& folder, int kilobytes, QString& why) {
+    QDir().mkpath(folder);
+    const QByteArray options = "size=" + QByteArray::number(kilobytes) + "k";
+    if (::mount("tmpfs", folder.toLocal8Bit().constData(), "tmpfs", 0, options.constData()) != 0) {
+        why = QString::fromLocal8Bit(std::strerror(errno));
+        return false;
+    }
+    return true;
+}
+
+bool remountReadOnly(const QString& folder) {
+    return ::mount("tmpfs", folder.toLocal8Bit().constData(), "tmpfs", MS_REMOUNT | MS_RDONLY,
+                   nullptr) == 0;
+}
+
+void unmount(const QString& folder) {
+    ::umount2(folder.toLocal8Bit().constData(), MNT_DETACH);
+}
+
+} // namespace px::faults

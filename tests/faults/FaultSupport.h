@@ -1,0 +1,74 @@
+#pragma once
+// The fault suite's tools: run parallax-cli as a user would (its own process, signals and all),
+// photograph a folder byte for byte before and after, and count what every case showed.
+
+#include <QByteArray>
+#include <QMap>
+#include <QString>
+#include <QStringList>
+
+namespace px::faults {
+
+struct CliRun {
+    int status = -1;      // exit status; -1 if killed by a signal
+    int signal = 0;       // the signal that ended it, if any
+    QString output;       // stdout and stderr together
+    double seconds = 0.0; // wall time of the process
+};
+
+// Runs parallax-cli in `folder` with `environment` ("NAME=value") added.
+CliRun runCli(const QString& folder, const QStringList& arguments,
+              const QStringList& environment = {});
+
+// Every file and folder under `folder` (hidden ones included), with the bytes of each file.
+QMap<QString, QByteArray> snapshot(const QString& folder);
+
+// Names what differs between two snapshots ("" if nothing): changed, added and removed entries.
+QString difference(const QMap<QString, QByteArray>& before, const QMap<QString, QByteArray>& after);
+
+// The suite's tally, printed at the end of each test program and summed in the docs.
+struct Tally {
+    int cases = 0, clearErrors = 0, crashes = 0;
+    long long bytesLost = 0;
+};
+Tally& tally();
+// Records one case: a clear error is a non-zero status with a message naming `file` and matching
+// `reason`; a crash is death by a signal the run did not ask for; bytes lost are the bytes of
+// files that changed or vanished.
+void record(const CliRun& run, bool clearError, bool crashed, long long bytesLost);
+long long bytesLost(const QMap<QString, QByteArray>& before,
+                    const QMap<QString, QByteArray>& after);
+void printTally(const char* suite);
+
+// Tries to mount a tmpfs of `kilobytes` at `folder` (root in a container that allows it).
+// Returns false, with the reason, where it cannot.
+bool mountTmpfs(const QString& folder, int kilobytes, QString& why);
+bool remountReadOnly(const QString& folder);
+void unmount(const QString& folder);
+
+} // namespace px::faults
+
+// Runs a case that must fail cleanly: status `rc`, the message naming `file` and matching
+// `reason`, the folder byte-identical afterwards and nothing left behind.
+#define PX_EXPECT_CLEAN_FAILURE(folder, args, env, rc, file, reason)                               \
+    do {                                                                                           \
+        const auto before_ = px::faults::snapshot(folder);                                         \
+        const px::faults::CliRun run_ = px::faults::runCli(folder, args, env);                     \
+        const auto after_ = px::faults::snapshot(folder);                                          \
+        const bool named_ =                                                                        \
+            run_.output.contains("error: ") && run_.output.contains(file) &&                       \
+            !run_.output.contains(QRegularExpression("\\.tmp[0-9]+-|export-(tmp|old)[0-9]"));      \
+        const bool reason_ = run_.output.contains(QRegularExpression(reason));                     \
+        px::faults::record(run_, run_.status == (rc) && named_ && reason_, run_.signal != 0,       \
+                           px::faults::bytesLost(before_, after_));                                \
+        QVERIFY2(run_.signal == 0, qPrintable("killed by signal " + QString::number(run_.signal) + \
+                                              ":\n" + run_.output));                               \
+        QVERIFY2(run_.status == (rc),                                                              \
+                 qPrintable("exit status " + QString::number(run_.status) + ":\n" + run_.output)); \
+        QVERIFY2(named_, qPrintable("the message does not name " + QString(file) +                 \
+                                    " (or names a temporary):\n" + run_.output));                  \
+        QVERIFY2(reason_,                                                                          \
+                 qPrintable("no reason matching " + QString(reason) + ":\n" + run_.output));       \
+        const QString diff_ = px::faults::difference(before_, after_);                             \
+        QVERIFY2(diff_.isEmpty(), qPrintable(diff_));                                              \
+    } while (false)

@@ -1,0 +1,186 @@
+// Importing texture sets in the editor, as an artist opening their own folder would, on Qt's
+// offscreen platform: a dropped set becomes a new material named after it with its relief read
+// from the data and its normal map in use; two sets are never mixed; the summary flips the
+// reading in one click; the name field, "auto" green, a stale baked normal map and baking over
+// a loaded one.
+
+#include "Baking.h"
+#include "ImportSummaryDialog.h"
+#include "MapRow.h"
+#include "MapsPanel.h"
+#include "MaterialPanel.h"
+#include "StudioTestSupport.h"
+#include "TextureSets.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSignalSpy>
+
+using namespace px;
+using namespace px::studio;
+using namespace px::studio::test;
+using px::test::TextureSetSpec;
+using px::test::writeTextureSet;
+
+class StudioImportTest : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_settings;
+
+private slots:
+    void initTestCase() { isolateSettings(m_settings); }
+
+    void droppedFolderBecomesANewMaterialReadFromTheData() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        spec.stem = "toy_box";
+        spec.depth = true;
+        spec.green = NormalGreen::DirectX;
+        spec.albedoSuffix = false;
+        const auto written = writeTextureSet(dir.path().toStdString(), spec);
+        w->document()->edit("scale", [](DocumentState& s) { s.material.heightScale = 0.2f; });
+
+        QVERIFY(dropFiles(w.get(), {dir.path()}));
+        const DocumentState& s = w->document()->state();
+        QCOMPARE(QString::fromStdString(s.material.name), QString("toy_box"));
+        QVERIFY(w->document()->filePath().isEmpty()); // new: never saved
+        QCOMPARE(w->document()->undoStack()->count(), 0);
+        QCOMPARE(s.material.heightScale, Material{}.heightScale); // not the old material's
+        QVERIFY(s.material.heightIsDepth);
+        QCOMPARE(s.material.normalGreen, NormalGreen::DirectX);
+        QCOMPARE(s.material.normalSource, NormalSource::Map);
+        QCOMPARE(s.assets->albedo.width, spec.size); // the set's albedo, not the sample's
+        QCOMPARE(QString::fromStdString(s.material.maps.albedo),
+                 QString::fromStdString(written.albedoFile));
+        QCOMPARE(w->materialPanel()->nameField()->text(), QString("toy_box"));
+        QCOMPARE(w->windowTitle().contains("toy_box"), true);
+
+        ImportSummaryDialog* summary = w->importSummary();
+        QVERIFY(summary);
+        QVERIFY(summary->decision().contains("depth map"));
+        QVERIFY(summary->decision().contains("DirectX"));
+        for (const char* file : {"toy_box_disp.png", "toy_box_normal.png", "toy_box.png"})
+            QVERIFY2(summary->text().contains(file), file);
+
+        // One click reads the height file the other way.
+        const float before = s.assets->height.at(3, 5);
+        summary->flipButton()->click();
+        QVERIFY(!w->document()->state().material.heightIsDepth);
+        QCOMPARE(w->document()->state().assets->height.at(3, 5), 1.0f - before);
+        QVERIFY(w->materialPanel()->depthMap()->isChecked() == false);
+    }
+
+    void twoSetsAreNeverMixed() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        QTemporaryDir dir;
+        TextureSetSpec a;
+        a.stem = "bricks2";
+        TextureSetSpec b;
+        b.stem = "wall";
+        b.seed = 2;
+        writeTextureSet(dir.path().toStdString(), a);
+        writeTextureSet(dir.path().toStdString(), b);
+        const std::string sampleName = w->document()->material().name;
+
+        QVERIFY(!w->importFolder(dir.path()));
+        QVERIFY2(w->lastProblem().contains("holds 2 texture sets (bricks2, wall)"),
+                 qPrintable(w->lastProblem()));
+        QCOMPARE(w->document()->material().name, sampleName);
+
+        QVERIFY(w->importFolder(dir.path(), "wall"));
+        QCOMPARE(QString::fromStdString(w->document()->material().name), QString("wall"));
+        QVERIFY(w->importSummary()->text().contains("Ignored: bricks2_disp.png (belongs to the "
+                                                    "set bricks2)"));
+
+        // Dropping one set's files imports that set.
+        QVERIFY(dropFiles(w.get(),
+                          {dir.filePath("bricks2_disp.png"), dir.filePath("bricks2_normal.png")}));
+        QCOMPARE(QString::fromStdString(w->document()->material().name), QString("bricks2"));
+        QVERIFY(w->document()->state().material.maps.albedo.empty());
+    }
+
+    void filesWithoutAHeightMapAddToTheMaterial() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        QTemporaryDir dir;
+        const auto set = writeTextureSet(dir.path().toStdString(), TextureSetSpec{});
+        const std::string name = w->document()->material().name;
+        QVERIFY(dropFiles(w.get(), {QString::fromStdString(set.normalFile)}));
+        QCOMPARE(w->document()->material().name, name);
+        QVERIFY(w->document()->state().hasMap(MapKind::Normal));
+        // A loaded normal map is used.
+        QCOMPARE(w->document()->material().normalSource, NormalSource::Map);
+    }
+
+    void nameFieldRenamesUndoably() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        QLineEdit* field = w->materialPanel()->nameField();
+        field->setText("mossy stones");
+        emit field->editingFinished();
+        QCOMPARE(QString::fromStdString(w->document()->material().name), QString("mossy stones"));
+        QVERIFY(w->windowTitle().contains("mossy stones"));
+        w->document()->undoStack()->undo();
+        QCOMPARE(field->text(), QString("bricks"));
+    }
+
+    void autoGreenIsToldFromTheHeightMap() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        spec.seed = 4;
+        writeTextureSet(dir.path().toStdString(), spec);
+        QVERIFY(w->importFolder(dir.path()));
+        QComboBox* green = w->materialPanel()->normalGreen();
+        green->setCurrentText("directx");
+        QCOMPARE(w->document()->material().normalGreen, NormalGreen::DirectX);
+        green->setCurrentText("auto");
+        QCOMPARE(w->document()->material().normalGreen, NormalGreen::OpenGL);
+        QCOMPARE(green->currentText(), QString("opengl"));
+    }
+
+    void bakingOverALoadedNormalMapAsksAndAStaleBakeSaysSo() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        QTemporaryDir dir;
+        writeTextureSet(dir.path().toStdString(), TextureSetSpec{});
+        QVERIFY(w->importFolder(dir.path()));
+        w->startBake(BakeKind::Normal);
+        auto* box = w->findChild<QMessageBox*>("confirm-normal-bake");
+        QVERIFY(box);
+        QVERIFY(!w->baker()->isBusy()); // nothing until the user says so
+        QVERIFY(box->text().contains("rock_normal.png"));
+        QSignalSpy finished(w->baker(), &BakeRunner::finished);
+        QPushButton* bake = nullptr;
+        for (QAbstractButton* b : box->buttons())
+            if (b->text() == "Bake")
+                bake = qobject_cast<QPushButton*>(b);
+        QVERIFY(bake);
+        bake->click();
+        QVERIFY(finished.wait(30000));
+        const DocumentState& s = w->document()->state();
+        QVERIFY(s.isUnsaved(MapKind::Normal));
+        QVERIFY(s.normalBake);
+        MapRow* row = w->mapsPanel()->row(MapKind::Normal);
+        QVERIFY(row->warningText().isEmpty());
+
+        w->document()->edit("scale", [](DocumentState& st) { st.material.heightScale = 0.1f; });
+        QVERIFY2(row->warningText().contains("baked at height scale 0.05, now 0.1"),
+                 qPrintable(row->warningText()));
+        // A baked map over a baked map needs no question.
+        w->document()->edit("scale", [](DocumentState& st) { st.material.heightScale = 0.05f; });
+        QVERIFY(row->warningText().isEmpty());
+        w->startBake(BakeKind::Normal);
+        QVERIFY(w->baker()->isBusy());
+        QVERIFY(finished.wait(30000));
+    }
+};
+
+QTEST_MAIN(StudioImportTest)
+#include "StudioImportTest.moc"

@@ -1,0 +1,80 @@
+#include "DoubleWalk.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace px::test {
+namespace {
+
+// Smallest s in [0, sMax] with A s^2 + B s + C >= 0 given C < 0, or -1 (cancellation-free roots).
+double firstRoot(double A, double B, double C, double sMax) {
+    double best = -1.0;
+    if (A == 0.0) {
+        if (B > 0.0)
+            best = -C / B;
+    } else {
+        const double D = B * B - 4.0 * A * C;
+        if (D >= 0.0) {
+            const double q = -0.5 * (B + std::copysign(std::sqrt(D), B));
+            const double r1 = q / A, r2 = q != 0.0 ? C / q : -1.0;
+            const double lo = std::min(r1, r2), hi = std::max(r1, r2);
+            best = lo >= 0.0 ? lo : hi;
+        }
+    }
+    return best >= 0.0 && best <= sMax ? best : -1.0;
+}
+
+double borderT(long long cell, double X0, double dX) {
+    if (dX > 0.0)
+        return (static_cast<double>(cell + 1) - X0) / dX;
+    if (dX < 0.0)
+        return (static_cast<double>(cell) - X0) / dX;
+    return std::numeric_limits<double>::infinity();
+}
+
+} // namespace
+
+double doubleWalkT(const HeightField& field, WrapMode wrap, glm::dvec2 uv0, glm::dvec2 P) {
+    const double X0 = uv0.x * field.width - 0.5, Y0 = uv0.y * field.height - 0.5;
+    const double dX = P.x * field.width, dY = P.y * field.height;
+    double t = std::clamp(1.0 - static_cast<double>(field.maxHeight()), 0.0, 1.0);
+    auto cellAt = [](double X, double d) {
+        return static_cast<long long>(d >= 0.0 ? std::floor(X) : std::ceil(X) - 1.0);
+    };
+    long long cx = cellAt(X0 + dX * t, dX), cy = cellAt(Y0 + dY * t, dY);
+    auto h = [&](long long x, long long y) {
+        const auto wrapped = [&](long long i, int size) {
+            if (wrap == WrapMode::Clamp)
+                return static_cast<int>(std::clamp<long long>(i, 0, size - 1));
+            return static_cast<int>(((i % size) + size) % size);
+        };
+        return static_cast<double>(field.at(wrapped(x, field.width), wrapped(y, field.height)));
+    };
+    while (t < 1.0) {
+        const double tEnd = std::min({borderT(cx, X0, dX), borderT(cy, Y0, dY), 1.0});
+        const double h00 = h(cx, cy), h10 = h(cx + 1, cy), h01 = h(cx, cy + 1),
+                     h11 = h(cx + 1, cy + 1);
+        const double ax = X0 + dX * t - static_cast<double>(cx);
+        const double ay = Y0 + dY * t - static_cast<double>(cy);
+        const double k = h00 - h10 - h01 + h11, hx = h10 - h00, hy = h01 - h00;
+        const double C = h00 + hx * ax + hy * ay + k * ax * ay - (1.0 - t);
+        if (C >= 0.0)
+            return t;
+        const double s = firstRoot(k * dX * dY, hx * dX + hy * dY + k * (ax * dY + ay * dX) + 1.0,
+                                   C, std::max(0.0, tEnd - t));
+        if (s >= 0.0)
+            return t + s;
+        if (tEnd >= 1.0)
+            break;
+        // Step over the border (or borders) reached at tEnd.
+        if (borderT(cx, X0, dX) <= tEnd)
+            cx += dX > 0.0 ? 1 : -1;
+        if (borderT(cy, Y0, dY) <= tEnd)
+            cy += dY > 0.0 ? 1 : -1;
+        t = std::max(t, tEnd);
+    }
+    return 1.0;
+}
+
+} // namespace px::test
