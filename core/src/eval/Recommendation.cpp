@@ -151,6 +151,7 @@ Result<Recommendation> recommend(const RecommendConfig& config, const EvalContro
         return s.error();
     std::vector<std::vector<BenchSetting>> ladders = recommendationLadders(config.techniques);
     std::vector<Technique> techniques;
+    techniques.reserve(ladders.size());
     for (const auto& l : ladders)
         techniques.push_back(l.front().technique);
 

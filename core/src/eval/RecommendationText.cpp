@@ -74,10 +74,10 @@ Result<double> texelsPerPixel(const ScreenDensity& d) {
 
 std::string confidenceStatement(const RecommendConfig& c, std::int64_t n) {
     const std::string conf = format("%.0f%%", c.confidence * 100.0);
-    const std::string rays = std::to_string(n) + " rays per angle (" +
-                             std::to_string(c.azimuthDeg.size()) + " azimuths, " +
-                             std::to_string(c.raysPerSide) + "x" + std::to_string(c.raysPerSide) +
-                             " jittered origins each)";
+    std::string rays = std::to_string(n) + " rays per angle (" +
+                       std::to_string(c.azimuthDeg.size()) + " azimuths, " +
+                       std::to_string(c.raysPerSide) + "x" + std::to_string(c.raysPerSide) +
+                       " jittered origins each)";
     const double fraction = zeroOfNUpperFraction(n, c.confidence);
     switch (c.budget.metric) {
     case BudgetMetric::P99: {
