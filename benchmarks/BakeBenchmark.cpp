@@ -7,6 +7,7 @@
 //   parallax-bench-bake --benchmark_filter=Normal
 
 #include "HeapCounter.h"
+#include "ProcessCpu.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/ConeMapReference.h"
 #include "parallax/bake/NormalMapBaker.h"
@@ -16,7 +17,6 @@
 #include <cstdio>
 #include <map>
 #include <string>
-#include <sys/resource.h>
 #include <thread>
 
 using namespace px;
@@ -30,17 +30,6 @@ HeightField mapFor(int kind, int size) {
                              1);
 }
 
-// CPU seconds of the whole process (every thread): on a shared machine, this divided by the
-// cores is what the wall time would be with the cores to itself.
-double processCpuSeconds() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    auto seconds = [](const timeval& t) {
-        return static_cast<double>(t.tv_sec) + t.tv_usec * 1e-6;
-    };
-    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-}
-
 template <typename Bake> void run(benchmark::State& state, Bake bake) {
     const int size = static_cast<int>(state.range(0));
     const HeightField field = mapFor(static_cast<int>(state.range(1)), size);
@@ -48,9 +37,9 @@ template <typename Bake> void run(benchmark::State& state, Bake bake) {
     for (auto _ : state) {
         bench::resetHeapPeak();
         const std::size_t before = bench::heapInUse();
-        const double cpuBefore = processCpuSeconds();
+        const double cpuBefore = bench::processCpuSeconds();
         bake(field);
-        cpu += processCpuSeconds() - cpuBefore;
+        cpu += bench::processCpuSeconds() - cpuBefore;
         peak = std::max(peak, static_cast<double>(bench::heapPeak() - before));
     }
     state.counters["peak_x_float_map"] = peak / (4.0 * size * size);

@@ -70,6 +70,7 @@ int run(int argc, char** argv) {
     add(addBenchCommand);
     add(addStabilityCommand);
     add(addBakeCommand);
+    add(addRecommendCommand);
     add(addImportCommand);
 
     try {

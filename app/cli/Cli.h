@@ -19,6 +19,7 @@ Action addExportCommand(CLI::App& app);
 Action addBenchCommand(CLI::App& app);
 Action addStabilityCommand(CLI::App& app);
 Action addBakeCommand(CLI::App& app);
+Action addRecommendCommand(CLI::App& app);
 Action addImportCommand(CLI::App& app);
 
 // Prints "error: <message>" to stderr and returns the failure status.

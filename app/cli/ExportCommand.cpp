@@ -24,6 +24,7 @@ struct ExportCliOptions {
     std::string normalGreen = "opengl";
     std::optional<float> scale;
     std::optional<std::string> technique;
+    AutoQuality autoQuality; // with --technique auto
     std::string name;
     std::string batch, preset;
     std::string format = "package";
@@ -68,7 +69,9 @@ Material materialFromOptions(const ExportCliOptions& o) {
         m.normalSource = NormalSource::Map;
     if (o.scale)
         m.heightScale = *o.scale;
-    if (o.technique) {
+    if (o.technique == "auto") {
+        m.autoQuality = o.autoQuality;
+    } else if (o.technique) {
         m.technique = *parseTechnique(*o.technique);
         m.params = info(m.technique).defaults;
     }
@@ -181,6 +184,7 @@ std::vector<std::string> techniqueNames() {
     std::vector<std::string> list;
     for (const TechniqueInfo& t : allTechniques())
         list.emplace_back(t.name);
+    list.emplace_back("auto");
     return list;
 }
 
@@ -202,8 +206,16 @@ Action addExportCommand(CLI::App& app) {
     cmd->add_option("--metallic", o->metallic, "With --height: metallic map");
     cmd->add_option("--scale", o->scale, "With --height: height scale in uv units")
         ->check(CLI::Range(0.0f, 100.0f));
-    cmd->add_option("--technique", o->technique, "With --height: technique")
+    cmd->add_option("--technique", o->technique,
+                    "With --height: technique, or auto (the cheapest meeting --budget up to "
+                    "--max-polar, resolved on the exported maps)")
         ->check(CLI::IsMember(techniqueNames()));
+    cmd->add_option("--budget", o->autoQuality.budget,
+                    "With --technique auto: p99 hit error budget in texels (default 0.5)")
+        ->check(CLI::Range(0.0f, 1e6f));
+    cmd->add_option("--max-polar", o->autoQuality.maxPolar,
+                    "With --technique auto: steepest view angle, degrees (default 80)")
+        ->check(CLI::Range(0.0f, 89.0f));
     cmd->add_option("--name", o->name, "With --height: material name (default: from the file)");
     cmd->add_option("--batch", o->batch, "Folder of height maps (found by suffix, e.g. _height)");
     cmd->add_option("--preset", o->preset,

@@ -1,4 +1,4 @@
-# Sources of the core's eval area: the benchmark and the stability suite.
+# Sources of the core's eval area: the benchmark, the stability suite and the recommendation.
 target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/EvalControl.cpp
   ${CMAKE_CURRENT_LIST_DIR}/HitErrorStats.cpp
@@ -9,4 +9,11 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/WorkPrecision.cpp
   ${CMAKE_CURRENT_LIST_DIR}/StabilityCases.cpp
   ${CMAKE_CURRENT_LIST_DIR}/StabilitySuite.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/QuantileBound.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/RayProbe.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ProbeRun.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Recommendation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/RecommendationText.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/EngineMarch.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/AutoTechnique.cpp
 )

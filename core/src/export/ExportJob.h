@@ -2,6 +2,7 @@
 // One export in progress: the material, its loaded maps, the staging folder, and the helpers
 // every target's writer uses.
 
+#include "parallax/eval/EngineMarch.h"
 #include "parallax/export/ExportFolder.h"
 #include "parallax/export/Exporter.h"
 
@@ -21,6 +22,8 @@ struct ExportJob {
     ExportResult& result;
     std::string stem;         // the material's name made safe for file names
     std::string materialFile; // map paths are relative to its folder
+    // Technique "auto" for Godot: the layer counts its own march needs (EngineMarch.h).
+    std::optional<EngineLayersAdvice> godotLayers = std::nullopt;
 
     // Writes into the export folder and records the file. Errors name the file.
     Status image(const std::string& name, const Image& image, PixelFormat format,

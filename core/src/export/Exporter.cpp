@@ -8,6 +8,7 @@
 #include "io/ShortestDecimal.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/NormalMapBaker.h"
+#include "parallax/eval/AutoTechnique.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
 
@@ -112,6 +113,18 @@ MapSet mapsFor(const Material& m, ExportFormat format) {
     return set;
 }
 
+// Technique "auto" measures the cone techniques on the material's own cone maps where it has them.
+MapSet mapsToLoad(const Material& m, ExportFormat format) {
+    MapSet set = mapsFor(m, format);
+    if (m.autoQuality) {
+        const MapSet present = mapsPresent(m.maps);
+        set.height = true;
+        set.cone = present.cone;
+        set.relaxedCone = present.relaxedCone;
+    }
+    return set;
+}
+
 } // namespace
 
 Result<ExportResult> exportMaterial(const Material& material, const std::string& materialFile,
@@ -119,18 +132,32 @@ Result<ExportResult> exportMaterial(const Material& material, const std::string&
     if (std::vector<MaterialProblem> problems = validateMaterial(material); !problems.empty())
         return Error{formatProblems(problems, materialFile.empty() ? material.name : materialFile)};
     // Everything that can fail on the input fails before the output folder is touched.
-    Result<MaterialAssets> assets =
-        loadMaterialAssets(material, materialFile, mapsFor(material, options.format), options.load);
+    Result<MaterialAssets> assets = loadMaterialAssets(
+        material, materialFile, mapsToLoad(material, options.format), options.load);
     if (!assets)
         return assets.error();
     Result<ExportFolder> folder = ExportFolder::begin(options.outDir, options.force);
     if (!folder)
         return folder.error();
 
+    // Technique "auto" is resolved here, on the maps being exported; what was chosen is recorded
+    // in the notes and the export carries only what the chosen setting reads.
+    Result<ResolvedAuto> resolved = resolveAutoTechnique(
+        material, assets->height, assets->cone, assets->relaxedCone,
+        materialFile.empty() ? material.name : materialFile, options.format == ExportFormat::Godot);
+    if (!resolved)
+        return resolved.error();
     ExportResult result;
-    exporter::ExportJob job{material,    options, std::move(*assets),
-                            *folder,     result,  exporter::fileStem(material.name),
-                            materialFile};
+    if (!resolved->note.empty())
+        result.notes.push_back(resolved->note);
+    exporter::ExportJob job{resolved->material,
+                            options,
+                            std::move(*assets),
+                            *folder,
+                            result,
+                            exporter::fileStem(material.name),
+                            materialFile,
+                            std::move(resolved->godot)};
     Status written = success();
     switch (options.format) {
     case ExportFormat::Package:

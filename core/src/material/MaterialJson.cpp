@@ -217,11 +217,19 @@ void readBody(const json& root, Reader& r, Material& m) {
     r.number(root, "", "tiling", kTiling, m.tiling);
 
     if (const json* t = r.member(root, "technique");
-        t &&
-        r.object(*t, "/technique",
-                 {"name", "minLayers", "maxLayers", "binarySteps", "secantSteps", "maxSteps"})) {
-        const std::vector<std::string_view> names = techniqueNames();
-        r.enumeration(*t, "/technique", "name", parseTechnique, names, m.technique);
+        t && r.object(*t, "/technique",
+                      {"name", "minLayers", "maxLayers", "binarySteps", "secantSteps", "maxSteps",
+                       "budget", "maxPolar"})) {
+        std::vector<std::string_view> names = techniqueNames();
+        names.push_back("auto");
+        if (const json* n = r.member(*t, "name"); n && n->is_string() && *n == "auto") {
+            AutoQuality q;
+            r.number(*t, "/technique", "budget", kAutoBudget, q.budget);
+            r.number(*t, "/technique", "maxPolar", kAutoMaxPolar, q.maxPolar);
+            m.autoQuality = q;
+        } else {
+            r.enumeration(*t, "/technique", "name", parseTechnique, names, m.technique);
+        }
         m.params = info(m.technique).defaults; // unset parameters: this technique's defaults
         r.integer(*t, "/technique", "minLayers", kLayers, m.params.minLayers);
         r.integer(*t, "/technique", "maxLayers", kLayers, m.params.maxLayers);
@@ -324,10 +332,15 @@ std::string materialToJson(const Material& m) {
                       {"scale", shortestDecimal(m.heightScale)}};
     root["wrap"] = toString(m.wrap);
     root["tiling"] = shortestDecimal(m.tiling);
-    root["technique"] = {
-        {"name", info(m.technique).name},      {"minLayers", m.params.minLayers},
-        {"maxLayers", m.params.maxLayers},     {"binarySteps", m.params.binarySteps},
-        {"secantSteps", m.params.secantSteps}, {"maxSteps", m.params.maxSteps}};
+    if (m.autoQuality)
+        root["technique"] = {{"name", "auto"},
+                             {"budget", shortestDecimal(m.autoQuality->budget)},
+                             {"maxPolar", shortestDecimal(m.autoQuality->maxPolar)}};
+    else
+        root["technique"] = {
+            {"name", info(m.technique).name},      {"minLayers", m.params.minLayers},
+            {"maxLayers", m.params.maxLayers},     {"binarySteps", m.params.binarySteps},
+            {"secantSteps", m.params.secantSteps}, {"maxSteps", m.params.maxSteps}};
     root["normal"] = {{"source", toString(m.normalSource)}, {"green", toString(m.normalGreen)}};
     root["shadow"] = {{"enabled", m.selfShadow}, {"softness", shortestDecimal(m.shadowSoftness)}};
     root["lighting"] = {{"model", toString(m.lighting)},

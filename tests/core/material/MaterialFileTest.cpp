@@ -230,7 +230,7 @@ void MaterialFileTest::problems_data() {
                                  << "m.json: /tiling: expected a number 0.001..10000, got 0";
     QTest::newRow("technique name")
         << body(R"("technique": {"name": "magic"})")
-        << R"(m.json: /technique/name: expected one of "none", "normal", "offset", "steep", "pom", "relief", "secant", "cone", "relaxed-cone", "pyramid", "exact", got "magic")";
+        << R"(m.json: /technique/name: expected one of "none", "normal", "offset", "steep", "pom", "relief", "secant", "cone", "relaxed-cone", "pyramid", "exact", "auto", got "magic")";
     QTest::newRow("technique type")
         << body(R"("technique": "pom")") << R"(m.json: /technique: expected an object, got "pom")";
     QTest::newRow("maxLayers string")

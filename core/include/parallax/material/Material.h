@@ -7,6 +7,7 @@
 #include "parallax/heightfield/WrapMode.h"
 #include "parallax/trace/Technique.h"
 
+#include <optional>
 #include <string>
 
 namespace px {
@@ -40,6 +41,15 @@ struct MaterialMaps {
     std::string metallic;
 };
 
+// Technique "auto": no technique of its own; resolved where the material is rendered or exported
+// to the cheapest setting whose hit error stays within `budget` texels (p99) at every view angle up
+// to `maxPolar` degrees (parallax/eval/AutoTechnique.h). Until then `technique` and `params` hold
+// a placeholder (pom's defaults) or the last resolution.
+struct AutoQuality {
+    float budget = 0.5f;
+    float maxPolar = 80.0f;
+};
+
 struct Material {
     std::string name = "untitled";
     MaterialMaps maps;
@@ -51,6 +61,7 @@ struct Material {
 
     Technique technique = Technique::Pom;
     TraceParams params = info(Technique::Pom).defaults;
+    std::optional<AutoQuality> autoQuality; // set: the technique is "auto"
 
     NormalSource normalSource = NormalSource::HeightCentral;
     NormalGreen normalGreen = NormalGreen::OpenGL;

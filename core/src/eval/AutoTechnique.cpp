@@ -1,0 +1,54 @@
+#include "parallax/eval/AutoTechnique.h"
+
+#include <cstdio>
+
+namespace px {
+
+Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const HeightField& height,
+                                          const ConeMap& cone, const ConeMap& relaxedCone,
+                                          const std::string& source, bool godotLayers) {
+    ResolvedAuto resolved{material, {}, std::nullopt};
+    if (!material.autoQuality)
+        return resolved;
+    if (height.empty())
+        return fileError(source, "technique auto needs the height map to measure");
+    RecommendConfig config;
+    config.field = std::make_shared<HeightField>(height);
+    config.name = source;
+    config.wrap = material.wrap;
+    config.scale = material.heightScale;
+    config.maxPolarDeg = material.autoQuality->maxPolar;
+    config.budget.texels = material.autoQuality->budget;
+    if (!cone.sqrtRatio.empty())
+        config.cone = std::make_shared<ConeMap>(cone);
+    if (!relaxedCone.sqrtRatio.empty())
+        config.relaxedCone = std::make_shared<ConeMap>(relaxedCone);
+    Result<Recommendation> r = recommend(config);
+    if (!r)
+        return r.error();
+    if (!r->found)
+        return fileError(source, "technique auto: " + describe(*r, config));
+    resolved.material.technique = r->chosen.setting.technique;
+    resolved.material.params = r->chosen.setting.params;
+    resolved.material.autoQuality.reset();
+    const BenchSetting& s = r->chosen.setting;
+    char cost[64];
+    std::snprintf(cost, sizeof cost, "%.3g fetches per ray", r->chosen.cost);
+    char budget[96];
+    std::snprintf(budget, sizeof budget, "p99 <= %g texel up to %g degrees", config.budget.texels,
+                  config.maxPolarDeg);
+    resolved.note = "technique auto resolved to " + std::string(info(s.technique).name) +
+                    (s.label.empty() ? "" : " (" + s.label + ")") + ": the cheapest setting " +
+                    "meeting " + budget + ", " + cost;
+    if (godotLayers) {
+        Result<EngineLayersAdvice> godot = recommendGodotLayers(
+            config, std::string(info(s.technique).name) +
+                        (s.label.empty() ? "" : " (" + s.label + ", in the package's shader)"));
+        if (!godot)
+            return godot.error();
+        resolved.godot = std::move(*godot);
+    }
+    return resolved;
+}
+
+} // namespace px

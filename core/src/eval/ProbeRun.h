@@ -1,0 +1,63 @@
+#pragma once
+// Measures candidate settings of a recommendation angle by angle, steepest first, stopping at the
+// first angle a setting fails; each angle's rays and exact hits are drawn once and shared by every
+// candidate. Every measure goes through a process-wide cache keyed by the map's content, size and
+// wrap, the scale, the sampling and the candidate, so a second question about the same material
+// (another budget, the editor asking again) traces nothing it has traced before.
+
+#include "RayProbe.h"
+#include "parallax/bake/MaxMipPyramid.h"
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace px {
+
+// A candidate: a stable key (technique and parameters, or an engine march and its layers), the
+// rays it takes, and how to make its tracer (called at most once, only on a cache miss).
+struct Probe {
+    std::string key;
+    RayModel model = RayModel::Relief;
+    std::function<Result<RangeTrace>()> make;
+};
+
+class ProbeRun {
+public:
+    ProbeRun(const RecommendConfig& config, const EvalControl& control);
+
+    // Bakes or fetches from the cache the derived maps the listed techniques read.
+    Status prepare(const std::vector<Technique>& techniques);
+    const TraceMaps& maps() const { return m_maps; }
+    const std::vector<double>& polars() const { return m_polars; }
+
+    // The angles of one candidate, steepest first, up to and including the first that fails the
+    // budget (all of them if none does). timeCpu: also the one-thread ns per ray.
+    Result<std::vector<AngleMeasure>> measure(const Probe& probe, bool timeCpu);
+
+    int cachedAngles() const { return m_cached; }
+    int measuredAngles() const { return m_measured; }
+    std::int64_t raysPerAngle() const;
+
+private:
+    Result<const RaySample*> rays(std::size_t polarIndex, RayModel model);
+    Result<const std::vector<TraceResult>*> reference(std::size_t polarIndex, RayModel model);
+
+    const RecommendConfig& m_config;
+    const EvalControl& m_control;
+    std::string m_contentKey; // content hash, size and wrap: what the derived maps depend on
+    std::string m_mapKey;     // and the scale and sampling: what the measures depend on
+    std::vector<double> m_polars;
+    TraceMaps m_maps;
+    std::shared_ptr<const ConeMap> m_cone, m_relaxedCone;
+    std::shared_ptr<const MaxMipPyramid> m_pyramid;
+    std::map<std::pair<std::size_t, RayModel>, RaySample> m_rays;
+    std::map<std::pair<std::size_t, RayModel>, std::shared_ptr<const std::vector<TraceResult>>>
+        m_references;
+    int m_cached = 0;
+    int m_measured = 0;
+};
+
+void clearProbeCache();
+
+} // namespace px

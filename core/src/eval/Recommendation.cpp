@@ -1,0 +1,257 @@
+#include "parallax/eval/Recommendation.h"
+
+#include "ProbeRun.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace px {
+namespace {
+
+// About 12% apart: 4, 5, 6, ... 224, 256.
+constexpr int kRungs[] = {4,   5,   6,   7,   8,   9,   10,  11,  12,  14,  16,  18, 20,
+                          22,  25,  28,  32,  36,  40,  45,  50,  56,  64,  72,  80, 90,
+                          100, 112, 128, 144, 160, 180, 200, 224, 256, 320, 400, 512};
+
+BenchSetting makeSetting(Technique t, const TraceParams& p) {
+    const TraceParams& d = info(t).defaults;
+    const bool isDefault = p.minLayers == d.minLayers && p.maxLayers == d.maxLayers &&
+                           p.binarySteps == d.binarySteps && p.secantSteps == d.secantSteps &&
+                           p.maxSteps == d.maxSteps;
+    return BenchSetting{t, p, settingLabel(t, p), isDefault};
+}
+
+std::string probeKey(const BenchSetting& s) {
+    const TraceParams& p = s.params;
+    return std::string(info(s.technique).name) + ":" + std::to_string(p.minLayers) + "-" +
+           std::to_string(p.maxLayers) + "/" + std::to_string(p.binarySteps) + "/" +
+           std::to_string(p.secantSteps) + "/" + std::to_string(p.maxSteps);
+}
+
+Probe techniqueProbe(const BenchSetting& s, const TraceMaps& maps, float scale) {
+    Probe probe;
+    probe.key = probeKey(s);
+    probe.model = RayModel::Relief;
+    probe.make = [s, maps, scale]() -> Result<RangeTrace> {
+        Result<Tracer> tracer = Tracer::create(maps, s.technique, s.params, scale);
+        if (!tracer)
+            return tracer.error();
+        auto owned = std::make_shared<Tracer>(std::move(*tracer));
+        RangeTrace inner = tracerRange(*owned);
+        return RangeTrace(
+            [owned, inner](const RaySample& rays, std::size_t begin, std::size_t end,
+                           std::span<TraceResult> hits) { inner(rays, begin, end, hits); });
+    };
+    return probe;
+}
+
+double costOf(const MeasuredSetting& m, CostMeasure cost) {
+    double c = 0.0;
+    for (const AngleMeasure& a : m.angles)
+        c = std::max(c, cost == CostMeasure::CpuTime ? a.cpuNsPerRay.value_or(0.0) : a.meanFetches);
+    if (cost == CostMeasure::GpuTime)
+        return m.gpuMsPerFrame.value_or(std::numeric_limits<double>::infinity());
+    return c;
+}
+
+} // namespace
+
+std::vector<double> recommendationPolars(double maxPolarDeg) {
+    std::vector<double> polars;
+    for (double below : {0.0, 5.0, 10.0, 20.0, 40.0, 60.0}) {
+        if (maxPolarDeg - below >= 0.0)
+            polars.push_back(maxPolarDeg - below);
+    }
+    return polars;
+}
+
+std::vector<std::vector<BenchSetting>> recommendationLadders(const std::vector<Technique>& only) {
+    std::vector<std::vector<BenchSetting>> ladders;
+    auto wanted = [&](Technique t) {
+        return only.empty() || std::find(only.begin(), only.end(), t) != only.end();
+    };
+    auto ladder = [&](Technique t, int maxRung, auto&& setParams) {
+        if (!wanted(t))
+            return;
+        std::vector<BenchSetting> rungs;
+        for (int n : kRungs) {
+            if (n > maxRung)
+                break;
+            TraceParams p = info(t).defaults;
+            setParams(p, n);
+            rungs.push_back(makeSetting(t, p));
+        }
+        ladders.push_back(std::move(rungs));
+    };
+    if (wanted(Technique::Offset))
+        ladders.push_back({makeSetting(Technique::Offset, info(Technique::Offset).defaults)});
+    // Layer marches: n layers at grazing angles, n/4 looking down (the tutorials' 8-32 shape).
+    auto layers = [](TraceParams& p, int n) {
+        p.maxLayers = n;
+        p.minLayers = std::max(1, (n + 2) / 4);
+    };
+    for (Technique t : {Technique::Steep, Technique::Pom, Technique::Secant})
+        ladder(t, 256, layers);
+    for (int binary : {3, 6})
+        ladder(Technique::Relief, 256, [&](TraceParams& p, int n) {
+            layers(p, n);
+            p.binarySteps = binary;
+        });
+    ladder(Technique::Cone, 512, [](TraceParams& p, int n) { p.maxSteps = n; });
+    for (int binary : {4, 8})
+        ladder(Technique::RelaxedCone, 256, [&](TraceParams& p, int n) {
+            p.maxSteps = n;
+            p.binarySteps = binary;
+        });
+    ladder(Technique::Pyramid, 512, [](TraceParams& p, int n) { p.maxSteps = n; });
+    if (wanted(Technique::Pyramid)) // uncapped: exact
+        ladders.back().push_back(
+            makeSetting(Technique::Pyramid, info(Technique::Pyramid).defaults));
+    if (wanted(Technique::Exact))
+        ladders.push_back({makeSetting(Technique::Exact, info(Technique::Exact).defaults)});
+    return ladders;
+}
+
+Status validate(const RecommendConfig& c) {
+    if (!c.field || c.field->empty())
+        return fileError(c.name, "the height map is empty");
+    if (!(std::isfinite(c.scale) && c.scale >= 0.0f))
+        return Error{"the height scale must be a finite number >= 0"};
+    if (!(c.maxPolarDeg >= 0.0 && c.maxPolarDeg <= 89.0))
+        return Error{"the maximum polar angle must be 0 to 89 degrees"};
+    if (c.azimuthDeg.empty())
+        return Error{"the view range needs at least one azimuth"};
+    if (!std::all_of(c.azimuthDeg.begin(), c.azimuthDeg.end(),
+                     [](double a) { return std::isfinite(a); }))
+        return Error{"every azimuth must be a finite angle"};
+    if (!(std::isfinite(c.budget.texels) && c.budget.texels >= 0.0))
+        return Error{"the error budget must be a finite number of texels >= 0"};
+    if (c.raysPerSide < 4 || c.raysPerSide > 256)
+        return Error{"rays per side must be 4 to 256, not " + std::to_string(c.raysPerSide)};
+    if (!(c.confidence > 0.5 && c.confidence < 1.0))
+        return Error{"the confidence must be between 0.5 and 1"};
+    for (Technique t : c.techniques) {
+        if (!info(t).parallax)
+            return Error{"'" + std::string(info(t).name) + "' traces no rays: it cannot be chosen"};
+    }
+    if (c.cost == CostMeasure::GpuTime && !c.gpuTimer)
+        return Error{"no GPU timing" +
+                     (c.gpuUnavailable.empty() ? std::string() : ": " + c.gpuUnavailable) +
+                     " (use the fetches or cpu cost)"};
+    return success();
+}
+
+void clearRecommendationCache() {
+    clearProbeCache();
+}
+
+Result<Recommendation> recommend(const RecommendConfig& config, const EvalControl& control) {
+    if (Status s = validate(config); !s)
+        return s.error();
+    std::vector<std::vector<BenchSetting>> ladders = recommendationLadders(config.techniques);
+    std::vector<Technique> techniques;
+    techniques.reserve(ladders.size());
+    for (const auto& l : ladders)
+        techniques.push_back(l.front().technique);
+
+    ProbeRun run(config, control);
+    if (Status s = run.prepare(techniques); !s)
+        return s.error();
+    const bool timeCpu = config.cost == CostMeasure::CpuTime;
+
+    Recommendation r;
+    r.polarDeg = run.polars();
+    r.raysPerAngle = run.raysPerAngle();
+    std::vector<std::size_t> candidates; // per ladder, the first rung that meets
+    auto measureRung = [&](const BenchSetting& s) -> Result<std::size_t> {
+        Result<std::vector<AngleMeasure>> angles =
+            run.measure(techniqueProbe(s, run.maps(), config.scale), timeCpu);
+        if (!angles)
+            return angles.error();
+        MeasuredSetting m;
+        m.setting = s;
+        m.angles = std::move(*angles);
+        m.meets = m.angles.size() == run.polars().size() && m.angles.back().meets;
+        r.measured.push_back(std::move(m));
+        return r.measured.size() - 1;
+    };
+    for (const std::vector<BenchSetting>& ladder : ladders) {
+        // Quality rises along a ladder: find its first meeting rung by bisection, the top first
+        // (if the best rung fails, none will do).
+        Result<std::size_t> top = measureRung(ladder.back());
+        if (!top)
+            return top.error();
+        if (!r.measured[*top].meets)
+            continue;
+        std::size_t lo = 0, hi = ladder.size() - 1, best = *top;
+        while (lo < hi) {
+            const std::size_t mid = lo + (hi - lo) / 2;
+            Result<std::size_t> at = measureRung(ladder[mid]);
+            if (!at)
+                return at.error();
+            if (r.measured[*at].meets) {
+                hi = mid;
+                best = *at;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        candidates.push_back(best);
+    }
+
+    for (std::size_t k : candidates) {
+        MeasuredSetting& m = r.measured[k];
+        if (config.cost == CostMeasure::GpuTime) {
+            GpuFrameRequest request;
+            request.maps = run.maps();
+            request.setting = &m.setting;
+            request.scale = config.scale;
+            request.polarDeg = run.polars().front();
+            request.azimuthDeg = config.azimuthDeg.front();
+            Result<GpuFrameTiming> gpu = config.gpuTimer(request);
+            if (!gpu)
+                return Error{"GPU timing failed: " + gpu.error().message};
+            m.gpuMsPerFrame = gpu->msPerFrame;
+        }
+        m.cost = costOf(m, config.cost);
+    }
+    // Cheapest; ties go to the lower error at the steepest angle, then to the ladder order.
+    for (std::size_t k : candidates) {
+        const MeasuredSetting& m = r.measured[k];
+        if (!r.found || m.cost < r.chosen.cost ||
+            (m.cost == r.chosen.cost && m.angles.front().p99 < r.chosen.angles.front().p99)) {
+            r.chosen = m;
+            r.found = true;
+        }
+    }
+    // The Pareto front at the steepest angle, over every setting measured.
+    for (MeasuredSetting& m : r.measured) {
+        const AngleMeasure& a = m.angles.front();
+        m.onFront =
+            std::none_of(r.measured.begin(), r.measured.end(), [&](const MeasuredSetting& o) {
+                const AngleMeasure& b = o.angles.front();
+                return (b.meanFetches <= a.meanFetches && b.p99 <= a.p99) &&
+                       (b.meanFetches < a.meanFetches || b.p99 < a.p99);
+            });
+        if (r.found && m.setting.technique == r.chosen.setting.technique &&
+            probeKey(m.setting) == probeKey(r.chosen.setting))
+            r.chosen.onFront = m.onFront;
+    }
+    if (r.found) {
+        const TechniqueInfo& ti = info(r.chosen.setting.technique);
+        r.maps.push_back("height");
+        if (ti.needsConeMap)
+            r.maps.push_back("cone");
+        if (ti.needsRelaxedConeMap)
+            r.maps.push_back("relaxed-cone");
+        if (ti.needsPyramid)
+            r.maps.push_back("pyramid");
+    }
+    r.confidence = confidenceStatement(config, r.raysPerAngle);
+    r.cachedAngles = run.cachedAngles();
+    r.measuredAngles = run.measuredAngles();
+    return r;
+}
+
+} // namespace px

@@ -1,0 +1,191 @@
+// The model of Godot 4's deep parallax (BaseMaterial3D, scene/resources/material.cpp) against the
+// published shader written out here step by step in double precision, and the layer advice
+// against a fresh measurement of the model.
+
+#include "parallax/eval/EngineMarch.h"
+
+#include "TestSupport.h"
+#include "parallax/eval/HitErrorStats.h"
+#include "parallax/sample/ProceduralMaps.h"
+#include "parallax/trace/TraceScene.h"
+
+#include <QtTest>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+using namespace px;
+
+class EngineMarchTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init() { clearRecommendationCache(); }
+    void layerCountIsGodotsMix();
+    void marchMatchesThePublishedShader();
+    void flatMapIsFoundExactly();
+    void adviceMeetsTheBudgetOnFreshRays();
+    void noLayerCountSaysWhatDoes();
+};
+
+namespace {
+
+struct ShaderHit {
+    double u, v;
+    int fetches;
+};
+
+// Godot's fragment code with its uniforms: heightmap_scale is 100 s (Godot multiplies by 0.01),
+// view_dir the unit vector towards the eye in tangent space, depth = 1 - height.
+ShaderHit publishedShader(const HeightField& field, double u0, double v0, double polarDeg,
+                          double azimuthDeg, double heightmapScale, int minLayers, int maxLayers) {
+    const double r = std::numbers::pi / 180.0;
+    const double vx = -std::sin(polarDeg * r) * std::cos(azimuthDeg * r);
+    const double vy = -std::sin(polarDeg * r) * std::sin(azimuthDeg * r);
+    const double vz = std::cos(polarDeg * r);
+    int fetches = 0;
+    auto texture = [&](double u, double v) {
+        ++fetches;
+        return test::bilinearHeight(field, WrapMode::Repeat, u, v);
+    };
+    const double a = std::abs(vz); // abs(dot(vec3(0, 0, 1), view_dir))
+    const double numLayers = maxLayers * (1.0 - a) + minLayers * a;
+    const double layerDepth = 1.0 / numLayers;
+    const double px = vx * heightmapScale * 0.01, py = vy * heightmapScale * 0.01;
+    const double dx = px / numLayers, dy = py / numLayers;
+    double ou = u0, ov = v0;
+    double depth = 1.0 - texture(ou, ov);
+    double currentDepth = 0.0;
+    while (currentDepth < depth) {
+        ou -= dx;
+        ov -= dy;
+        depth = 1.0 - texture(ou, ov);
+        currentDepth += layerDepth;
+    }
+    const double pu = ou + dx, pv = ov + dy;
+    const double afterDepth = depth - currentDepth;
+    const double beforeDepth = (1.0 - texture(pu, pv)) - currentDepth + layerDepth;
+    const double weight = afterDepth / (afterDepth - beforeDepth);
+    return {ou * (1.0 - weight) + pu * weight, ov * (1.0 - weight) + pv * weight, fetches};
+}
+
+} // namespace
+
+void EngineMarchTest::layerCountIsGodotsMix() {
+    const EngineLayers layers{8, 32};
+    QCOMPARE(godotLayerCount(layers, 1.0f), 8.0f);
+    QCOMPARE(godotLayerCount(layers, 0.0f), 32.0f);
+    QCOMPARE(godotLayerCount(layers, 0.5f), 20.0f);
+    QCOMPARE(godotLayerCount(layers, -0.5f), 20.0f); // |cos|
+    // Godot's P is the normalised view vector's xy: s sin(polar), not the relief's s tan(polar).
+    const glm::vec2 P = godotParallaxVector(0.05f, 60.0, 0.0);
+    QVERIFY(std::abs(P.x - 0.05f * std::sin(60.0f * std::numbers::pi_v<float> / 180.0f)) < 1e-7f);
+    QCOMPARE(P.y, 0.0f);
+}
+
+void EngineMarchTest::marchMatchesThePublishedShader() {
+    const HeightField field = makeProceduralMap(ProceduralMap::Stones, 64, 64, 3);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    int compared = 0;
+    for (double polar : {0.0, 30.0, 60.0, 80.0, 88.0}) {
+        for (double azimuth : {0.0, 35.0, 150.0, 260.0}) {
+            for (const EngineLayers& layers : {EngineLayers{8, 32}, EngineLayers{2, 7}}) {
+                const float cosPolar =
+                    static_cast<float>(std::cos(polar * std::numbers::pi / 180.0));
+                const glm::vec2 P = godotParallaxVector(0.05f, polar, azimuth);
+                for (int k = 0; k < 50; ++k) {
+                    const double u0 = uniform(rng), v0 = uniform(rng);
+                    const ShaderHit want = publishedShader(field, u0, v0, polar, azimuth, 5.0,
+                                                           layers.minLayers, layers.maxLayers);
+                    const TraceResult got =
+                        godotDeepParallax(field, WrapMode::Repeat, {u0, v0}, P, cosPolar, layers);
+                    // float against double: the same steps, within float rounding of a texel
+                    const double texels = std::hypot(got.u - want.u, got.v - want.v) * 64.0;
+                    QVERIFY2(texels < 1e-3, qPrintable(QString("polar %1 azimuth %2: %3 texels")
+                                                           .arg(polar)
+                                                           .arg(azimuth)
+                                                           .arg(texels)));
+                    QCOMPARE(got.fetches, want.fetches);
+                    ++compared;
+                }
+            }
+        }
+    }
+    QCOMPARE(compared, 5 * 4 * 2 * 50);
+}
+
+void EngineMarchTest::flatMapIsFoundExactly() {
+    // On a plane the linear interpolation between the last two layers is exact: the hit is at
+    // depth 1 - h along Godot's P, whatever the layers.
+    const HeightField flat(16, 16, 0.25f);
+    const glm::vec2 P = godotParallaxVector(0.1f, 70.0, 20.0);
+    const float cosPolar = static_cast<float>(std::cos(70.0 * std::numbers::pi / 180.0));
+    for (int maxLayers : {4, 9, 32}) {
+        const TraceResult hit = godotDeepParallax(flat, WrapMode::Repeat, {0.3, 0.6}, P, cosPolar,
+                                                  {std::max(1, maxLayers / 4), maxLayers});
+        QVERIFY(std::abs(hit.u - (0.3 + P.x * 0.75)) < 1e-5);
+        QVERIFY(std::abs(hit.v - (0.6 + P.y * 0.75)) < 1e-5);
+        QVERIFY(std::abs(hit.t - 0.75f) < 1e-4f);
+    }
+}
+
+void EngineMarchTest::adviceMeetsTheBudgetOnFreshRays() {
+    RecommendConfig config;
+    config.field =
+        std::make_shared<HeightField>(makeProceduralMap(ProceduralMap::Stones, 64, 64, 5));
+    config.name = "stones";
+    config.maxPolarDeg = 75.0;
+    config.budget.texels = 0.25;
+    Result<EngineLayersAdvice> advice = recommendGodotLayers(config);
+    QVERIFY(advice.ok() && advice->found);
+    QVERIFY(advice->layers.maxLayers >= 4 && advice->layers.minLayers >= 1);
+    QVERIFY(QString::fromStdString(advice->note).startsWith("Godot deep parallax with "));
+
+    // Fresh rays of the test's own drawing against the exact hit of Godot's own ray.
+    const HeightField& field = *config.field;
+    TraceMaps maps;
+    maps.height = &field;
+    Result<Tracer> exact =
+        Tracer::create(maps, Technique::Exact, info(Technique::Exact).defaults, config.scale);
+    QVERIFY(exact.ok());
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    for (double polar : recommendationPolars(config.maxPolarDeg)) {
+        std::vector<double> errors;
+        const float cosPolar = static_cast<float>(std::cos(polar * std::numbers::pi / 180.0));
+        for (double azimuth : config.azimuthDeg) {
+            const glm::vec2 P = godotParallaxVector(config.scale, polar, azimuth);
+            for (int k = 0; k < 2000; ++k) {
+                const glm::dvec2 uv0(uniform(rng), uniform(rng));
+                const TraceResult hit =
+                    godotDeepParallax(field, WrapMode::Repeat, uv0, P, cosPolar, advice->layers);
+                errors.push_back(hitErrorTexels(hit, exact->trace(uv0, P), 64, 64));
+            }
+        }
+        const double p99 = nearestRankPercentile(errors, 0.99);
+        QVERIFY2(p99 <= config.budget.texels,
+                 qPrintable(QString("polar %1: p99 %2").arg(polar).arg(p99)));
+    }
+}
+
+void EngineMarchTest::noLayerCountSaysWhatDoes() {
+    RecommendConfig config;
+    config.field =
+        std::make_shared<HeightField>(makeProceduralMap(ProceduralMap::Spikes, 64, 64, 2));
+    config.name = "spikes";
+    config.maxPolarDeg = 85.0;
+    config.budget = {0.001, BudgetMetric::Max};
+    Result<EngineLayersAdvice> advice = recommendGodotLayers(config, "cone (steps 64)");
+    QVERIFY(advice.ok());
+    QVERIFY(!advice->found);
+    QCOMPARE(advice->tried.maxLayers, 128);
+    const QString note = QString::fromStdString(advice->note);
+    QVERIFY2(note.startsWith("Godot's deep parallax does not meet max <= 0.001 texel up to 85 "
+                             "degrees with up to 32-128 layers: at 85 degrees"),
+             qPrintable(note));
+    QVERIFY(note.endsWith("; cone (steps 64) does"));
+}
+
+QTEST_GUILESS_MAIN(EngineMarchTest)
+#include "EngineMarchTest.moc"

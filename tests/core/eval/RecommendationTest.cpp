@@ -1,0 +1,352 @@
+// The `auto` recommendation against the full sweep: on maps the tests make (smooth, stepped,
+// spiky, 8-bit quantised) the chosen setting meets its budget on a fresh, full measurement at
+// every angle, costs at most 1.15x the cheapest setting of the full sweep that meets it, and its
+// confidence statement holds against the full measurement. Also: the same input gives the same
+// answer, a second call is answered from the cache, and bad input is refused.
+
+#include "parallax/eval/Recommendation.h"
+
+#include "parallax/eval/HitErrorStats.h"
+#include "parallax/eval/QuantileBound.h"
+#include "parallax/sample/ProceduralMaps.h"
+#include "parallax/trace/TraceScene.h"
+
+#include <QtTest>
+#include <cmath>
+#include <map>
+#include <random>
+
+using namespace px;
+
+class RecommendationTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init() { clearRecommendationCache(); }
+    void quantileRankIsTheBinomialBound();
+    void screenDensity();
+    void meetsBudgetAtLeastCostAgainstFullSweep_data();
+    void meetsBudgetAtLeastCostAgainstFullSweep();
+    void maxBudgetStatementHoldsOnFullMeasurement();
+    void sameInputSameAnswerAndCached();
+    void invalidInput();
+};
+
+namespace {
+
+constexpr int kMapSize = 64;
+constexpr int kFullRays = 48; // squared: rays per azimuth of the fresh measurement
+
+HeightField quantised(HeightField field, int levels) {
+    for (float& h : field.texels)
+        h = std::round(h * static_cast<float>(levels - 1)) / static_cast<float>(levels - 1);
+    return field;
+}
+
+std::shared_ptr<const HeightField> testMap(const QString& kind, unsigned seed) {
+    const HeightField noise = makeProceduralMap(ProceduralMap::Noise, kMapSize, kMapSize, seed);
+    if (kind == "smooth")
+        return std::make_shared<HeightField>(noise);
+    if (kind == "stepped") // terraces: five flat levels with vertical steps between them
+        return std::make_shared<HeightField>(quantised(noise, 5));
+    if (kind == "spiky")
+        return std::make_shared<HeightField>(
+            makeProceduralMap(ProceduralMap::Spikes, kMapSize, kMapSize, seed));
+    if (kind == "bricks")
+        return std::make_shared<HeightField>(
+            makeProceduralMap(ProceduralMap::Bricks, kMapSize, kMapSize, seed));
+    return std::make_shared<HeightField>(quantised(noise, 256)); // 8-bit
+}
+
+RecommendConfig testConfig(std::shared_ptr<const HeightField> field) {
+    RecommendConfig c;
+    c.field = std::move(field);
+    c.name = "test map";
+    c.scale = 0.05f;
+    c.maxPolarDeg = 80.0;
+    c.budget = {0.5, BudgetMetric::P99};
+    return c;
+}
+
+// The fresh measurement: rays of the test's own drawing (independent uniform origins from its own
+// generator, not the recommender's stratified ones; a regular grid would alias with the map's
+// texels), every azimuth pooled per polar angle.
+struct FullAngle {
+    std::vector<double> errors; // every ray, invalid ones infinite
+    double meanFetches = 0.0;
+};
+
+class FullMeasure {
+public:
+    explicit FullMeasure(const RecommendConfig& c) : m_config(c) {}
+
+    FullAngle measure(const BenchSetting& s, double polar) {
+        const HeightField& field = *m_config.field;
+        TraceMaps maps;
+        maps.height = &field;
+        maps.wrap = m_config.wrap;
+        Result<Tracer> tracer = Tracer::create(maps, s.technique, s.params, m_config.scale);
+        if (!tracer)
+            qFatal("tracer: %s", tracer.error().message.c_str());
+        FullAngle a;
+        double fetches = 0.0;
+        for (double azimuth : m_config.azimuthDeg) {
+            const glm::vec2 P = parallaxVector(m_config.scale, polar, azimuth);
+            const Rays& rays = reference(polar, azimuth);
+            for (std::size_t k = 0; k < rays.origins.size(); ++k) {
+                const TraceResult hit = tracer->trace(rays.origins[k], P);
+                const bool valid = std::isfinite(hit.u) && std::isfinite(hit.v);
+                a.errors.push_back(
+                    valid ? hitErrorTexels(hit, rays.exact[k], field.width, field.height)
+                          : INFINITY);
+                fetches += hit.fetches;
+            }
+        }
+        a.meanFetches = fetches / static_cast<double>(a.errors.size());
+        return a;
+    }
+
+    static double p99(FullAngle a) { return nearestRankPercentile(a.errors, 0.99); }
+
+private:
+    struct Rays {
+        std::vector<glm::dvec2> origins;
+        std::vector<TraceResult> exact;
+    };
+
+    const Rays& reference(double polar, double azimuth) {
+        auto key = std::make_pair(polar, azimuth);
+        auto it = m_references.find(key);
+        if (it != m_references.end())
+            return it->second;
+        TraceMaps maps;
+        maps.height = m_config.field.get();
+        maps.wrap = m_config.wrap;
+        Result<Tracer> exact =
+            Tracer::create(maps, Technique::Exact, info(Technique::Exact).defaults, m_config.scale);
+        std::mt19937_64 rng(static_cast<std::uint64_t>(polar * 977.0 + azimuth * 13.0) + 4242);
+        std::uniform_real_distribution<double> uniform(0.0, 1.0);
+        const glm::vec2 P = parallaxVector(m_config.scale, polar, azimuth);
+        Rays rays;
+        for (int k = 0; k < kFullRays * kFullRays; ++k) {
+            rays.origins.emplace_back(uniform(rng), uniform(rng));
+            rays.exact.push_back(exact->trace(rays.origins.back(), P));
+        }
+        return m_references[key] = std::move(rays);
+    }
+
+    const RecommendConfig& m_config;
+    std::map<std::pair<double, double>, Rays> m_references;
+};
+
+std::string keyOf(const BenchSetting& s) {
+    return std::string(info(s.technique).name) + " " + s.label;
+}
+
+} // namespace
+
+void RecommendationTest::quantileRankIsTheBinomialBound() {
+    // X(n) bounds the p99 with 99% confidence once 1 - 0.99^n >= 0.99, i.e. from n = 459 on.
+    QCOMPARE(quantileUpperRank(459, 0.99, 0.99), std::int64_t{459});
+    QCOMPARE(quantileUpperRank(458, 0.99, 0.99), std::int64_t{0});
+    // Larger samples: above the nearest-rank p99, below the maximum.
+    const std::int64_t k = quantileUpperRank(10000, 0.99, 0.99);
+    QVERIFY(k > 9900 && k < 10000);
+    // The 95% bound is lower than the 99% one.
+    QVERIFY(quantileUpperRank(10000, 0.99, 0.95) < k);
+    QVERIFY(std::abs(zeroOfNUpperFraction(1000, 0.99) - (-std::log(0.01) / 1000.0)) < 1e-4);
+}
+
+void RecommendationTest::screenDensity() {
+    ScreenDensity d;
+    d.mapWidth = 1024;
+    d.tiling = 2.0;
+    d.surfaceWidth = 2.0;
+    d.distance = 2.0;
+    d.fovDeg = 90.0;
+    d.screenHeight = 1000;
+    Result<double> tpp = texelsPerPixel(d); // 0.004 world units per pixel x 1024 texels per unit
+    QVERIFY(tpp.ok());
+    QVERIFY(std::abs(*tpp - 4.096) < 1e-9);
+    d.distance = 0.0;
+    QVERIFY(!texelsPerPixel(d).ok());
+}
+
+void RecommendationTest::meetsBudgetAtLeastCostAgainstFullSweep_data() {
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<unsigned>("seed");
+    QTest::addColumn<double>("budget");
+    QTest::newRow("smooth 0.5") << "smooth" << 3u << 0.5;
+    QTest::newRow("stepped 0.5") << "stepped" << 5u << 0.5;
+    QTest::newRow("spiky 0.5") << "spiky" << 7u << 0.5;
+    QTest::newRow("8-bit 0.5") << "8bit" << 11u << 0.5;
+    QTest::newRow("8-bit 0.1") << "8bit" << 13u << 0.1;
+    QTest::newRow("bricks 2") << "bricks" << 1u << 2.0;
+}
+
+void RecommendationTest::meetsBudgetAtLeastCostAgainstFullSweep() {
+    QFETCH(QString, kind);
+    QFETCH(unsigned, seed);
+    QFETCH(double, budget);
+    RecommendConfig config = testConfig(testMap(kind, seed));
+    config.budget.texels = budget;
+    Result<Recommendation> r = recommend(config);
+    QVERIFY2(r.ok(), r.ok() ? "" : r.error().message.c_str());
+    QVERIFY(r->found);
+
+    // The full sweep: every rung of every ladder on the fresh measurement, steepest angle first
+    // (a rung that fails there is out).
+    FullMeasure full(config);
+    const std::vector<double> polars = recommendationPolars(config.maxPolarDeg);
+    auto fullCost = [&](const BenchSetting& s) -> std::optional<double> {
+        double cost = 0.0;
+        for (double polar : polars) {
+            FullAngle a = full.measure(s, polar);
+            cost = std::max(cost, a.meanFetches);
+            if (FullMeasure::p99(a) > budget)
+                return std::nullopt;
+        }
+        return cost;
+    };
+    double cheapest = INFINITY;
+    std::string cheapestName;
+    for (const auto& ladder : recommendationLadders()) {
+        // Fetches never fall as a ladder climbs: once a rung costs more at the steepest angle
+        // than the cheapest meeting setting so far, so do the rungs above it.
+        for (const BenchSetting& s : ladder) {
+            if (full.measure(s, polars.front()).meanFetches >= cheapest)
+                break;
+            if (std::optional<double> c = fullCost(s)) {
+                if (*c < cheapest) {
+                    cheapest = *c;
+                    cheapestName = keyOf(s);
+                }
+                break;
+            }
+        }
+    }
+    QVERIFY(std::isfinite(cheapest)); // exact always meets
+
+    // The recommendation, measured afresh: within budget at the judged angles and between them.
+    const BenchSetting& chosen = r->chosen.setting;
+    double chosenCost = 0.0;
+    std::vector<double> fresh = polars;
+    for (double between : {77.5, 72.5, 65.0, 50.0, 0.0})
+        fresh.push_back(between);
+    for (double polar : fresh) {
+        FullAngle a = full.measure(chosen, polar);
+        chosenCost = std::max(chosenCost, a.meanFetches);
+        const double p99 = FullMeasure::p99(a);
+        QVERIFY2(p99 <= budget, qPrintable(QString("%1 at polar %2: p99 %3 > budget %4")
+                                               .arg(QString::fromStdString(keyOf(chosen)))
+                                               .arg(polar)
+                                               .arg(p99)
+                                               .arg(budget)));
+    }
+    qInfo("%s: chose %s (%.2f fetches), full sweep's cheapest %s (%.2f)", qPrintable(kind),
+          keyOf(chosen).c_str(), chosenCost, cheapestName.c_str(), cheapest);
+    QVERIFY2(chosenCost <= 1.15 * cheapest,
+             qPrintable(QString("%1 costs %2 fetches, the cheapest meeting setting %3 costs %4")
+                            .arg(QString::fromStdString(keyOf(chosen)))
+                            .arg(chosenCost)
+                            .arg(QString::fromStdString(cheapestName))
+                            .arg(cheapest)));
+
+    // The confidence statement: the bound the budget was judged on is at or above the p99 of the
+    // full measurement. The full grid's p99 is itself a sample, so a few cases may cross; none
+    // judged to meet may fail the budget on the full measurement.
+    int cases = 0, below = 0;
+    for (const MeasuredSetting& m : r->measured) {
+        for (const AngleMeasure& a : m.angles) {
+            ++cases;
+            const double p99 = FullMeasure::p99(full.measure(m.setting, a.polarDeg));
+            below += p99 > a.p99Bound ? 1 : 0;
+            QVERIFY2(!a.meets || p99 <= budget,
+                     qPrintable(QString("%1 at polar %2 judged to meet, full p99 %3")
+                                    .arg(QString::fromStdString(keyOf(m.setting)))
+                                    .arg(a.polarDeg)
+                                    .arg(p99)));
+        }
+    }
+    qInfo("%s: p99 bound below the full p99 in %d of %d cases", qPrintable(kind), below, cases);
+    QVERIFY(cases > 10);
+    QVERIFY2(below * 20 <= cases, qPrintable(QString("%1 of %2").arg(below).arg(cases)));
+}
+
+void RecommendationTest::maxBudgetStatementHoldsOnFullMeasurement() {
+    // With a max budget no sampled ray exceeds it; the statement bounds the share of all rays that
+    // may: check it on the full grid.
+    RecommendConfig config = testConfig(testMap("smooth", 17));
+    config.budget = {0.25, BudgetMetric::Max};
+    Result<Recommendation> r = recommend(config);
+    QVERIFY(r.ok() && r->found);
+    QVERIFY(QString::fromStdString(r->confidence).contains("fewer than"));
+    FullMeasure full(config);
+    const double allowed = zeroOfNUpperFraction(r->raysPerAngle, config.confidence);
+    for (double polar : r->polarDeg) {
+        const FullAngle a = full.measure(r->chosen.setting, polar);
+        const auto over = std::count_if(a.errors.begin(), a.errors.end(),
+                                        [&](double e) { return e > config.budget.texels; });
+        const double share = static_cast<double>(over) / static_cast<double>(a.errors.size());
+        QVERIFY2(share <= allowed, qPrintable(QString("polar %1: %2 of all rays over, statement %3")
+                                                  .arg(polar)
+                                                  .arg(share)
+                                                  .arg(allowed)));
+    }
+}
+
+void RecommendationTest::sameInputSameAnswerAndCached() {
+    RecommendConfig config = testConfig(testMap("bricks", 2));
+    Result<Recommendation> a = recommend(config);
+    QVERIFY(a.ok() && a->found);
+    QVERIFY(a->measuredAngles > 0);
+    clearRecommendationCache();
+    Result<Recommendation> b = recommend(config);
+    QVERIFY(b.ok() && b->found);
+    QCOMPARE(keyOf(b->chosen.setting), keyOf(a->chosen.setting));
+    QCOMPARE(b->chosen.cost, a->chosen.cost);
+    QCOMPARE(b->chosen.angles.front().p99Bound, a->chosen.angles.front().p99Bound);
+    QCOMPARE(b->measured.size(), a->measured.size());
+
+    // Asked again (another budget too): nothing is traced that was traced before.
+    Result<Recommendation> c = recommend(config);
+    QVERIFY(c.ok());
+    QCOMPARE(c->measuredAngles, 0);
+    QCOMPARE(c->cachedAngles, b->measuredAngles);
+    QCOMPARE(keyOf(c->chosen.setting), keyOf(a->chosen.setting));
+    // A different scale is a different material: measured afresh.
+    config.scale = 0.08f;
+    Result<Recommendation> d = recommend(config);
+    QVERIFY(d.ok() && d->measuredAngles > 0);
+}
+
+void RecommendationTest::invalidInput() {
+    RecommendConfig config = testConfig(testMap("smooth", 1));
+    auto message = [](const RecommendConfig& c) {
+        Result<Recommendation> r = recommend(c);
+        return r.ok() ? std::string() : r.error().message;
+    };
+    RecommendConfig c = config;
+    c.field = std::make_shared<HeightField>();
+    QCOMPARE(message(c), std::string("test map: the height map is empty"));
+    c = config;
+    c.maxPolarDeg = 90.0;
+    QCOMPARE(message(c), std::string("the maximum polar angle must be 0 to 89 degrees"));
+    c = config;
+    c.budget.texels = -1.0;
+    QCOMPARE(message(c), std::string("the error budget must be a finite number of texels >= 0"));
+    c = config;
+    c.azimuthDeg.clear();
+    QCOMPARE(message(c), std::string("the view range needs at least one azimuth"));
+    c = config;
+    c.cost = CostMeasure::GpuTime;
+    c.gpuUnavailable = "no OpenGL 4.3 context";
+    QCOMPARE(message(c),
+             std::string("no GPU timing: no OpenGL 4.3 context (use the fetches or cpu cost)"));
+    c = config;
+    c.techniques = {Technique::Normal};
+    QCOMPARE(message(c), std::string("'normal' traces no rays: it cannot be chosen"));
+}
+
+QTEST_GUILESS_MAIN(RecommendationTest)
+#include "RecommendationTest.moc"
