@@ -58,7 +58,7 @@ foreach(line ${license_lines})
   endif()
 endforeach()
 if(NOT copyright MATCHES "^Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/\n"
-   OR NOT copyright MATCHES "\nFiles: \*\nCopyright: [^\n]+\nLicense: MIT\n")
+   OR NOT copyright MATCHES "\nFiles: [*]\nCopyright: [^\n]+\nLicense: MIT\n")
   message(FATAL_ERROR "Debian's copyright file is not in the machine-readable format:\n${copyright}")
 endif()
 
