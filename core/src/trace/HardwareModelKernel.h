@@ -5,9 +5,7 @@
 // asks for at least that, GL for nothing), llvmpipe with finer ones, so llvmpipe alone cannot show
 // what 8 bits cost; this model can, on the CPU, for the same rays. Gathers return texels, exact.
 
-#include "parallax/bake/ConeMap.h"
-#include "parallax/bake/MaxMipPyramid.h"
-#include "parallax/heightfield/HeightField.h"
+#include "KernelBindings.h"
 
 #include <glm/glm.hpp>
 
@@ -16,30 +14,8 @@ namespace px::kernel {
 using namespace glm; // the kernel files speak GLSL
 
 // NOLINTBEGIN: the included kernel code follows GLSL, not this project's C++ style.
-struct HardwareModelKernel {
-    // Uniforms (see common.glsl).
-    ivec2 pxMapSize{1, 1};
-    bool pxWrapRepeat = true;
-    float pxHeightMax = 1.0f;
-    float pxScale = 0.0f;
-    int pxMinLayers = 8;
-    int pxMaxLayers = 32;
-    int pxRefineSteps = 0;
-    int pxMaxSteps = 64;
-    int pxMaxMipTop = 0;
-    int pxFetches = 0;
+struct HardwareModelKernel : KernelBindings {
     int subTexelBits = 8;
-
-    // Samplers.
-    const HeightField* heightField = nullptr;
-    const ConeMap* coneMap = nullptr;
-    const MaxMipPyramid* pyramid = nullptr;
-
-    float pxHeightTexel(ivec2 i) const { return heightField->at(i.x, i.y); }
-    vec2 pxConeTexel(ivec2 i) const {
-        return vec2(heightField->at(i.x, i.y), coneMap->g(i.x, i.y));
-    }
-    float pxMaxMipNode(int level, ivec2 n) const { return pyramid->at(level, n.x, n.y); }
 
     // The texture unit: the weight rounded to the nearest multiple of 2^-bits.
     float pxWeight(float f) const {
@@ -80,20 +56,7 @@ struct HardwareModelKernel {
     }
 
 #define PX_HAS_HARDWARE_SAMPLING 1
-#include "trace/common.glsl"
-#include "trace/cone_conservative.glsl"
-#include "trace/cone_relaxed.glsl"
-#include "trace/exact.glsl"
-#include "trace/march.glsl"
-#include "trace/normals.glsl"
-#include "trace/offset.glsl"
-#include "trace/pom.glsl"
-#include "trace/pyramid.glsl"
-#include "trace/relief.glsl"
-#include "trace/secant.glsl"
-#include "trace/shadow.glsl"
-#include "trace/steep.glsl"
-#include "trace/walk.glsl"
+#include "KernelFiles.inc"
 #undef PX_HAS_HARDWARE_SAMPLING
 };
 // NOLINTEND
