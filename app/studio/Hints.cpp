@@ -39,7 +39,7 @@ QString qualityRange() {
 }
 QString binarySteps() {
     return QObject::tr("numBinarySteps: halvings of the last layer after the march (relief "
-                       "mapping, relaxed cones). Each halves the remaining error.");
+                       "mapping). Each halves the remaining error.");
 }
 QString secantSteps() {
     return QObject::tr("Secant (regula falsi) steps after the march: each interpolates where the "
@@ -127,8 +127,8 @@ QString technique(Technique t) {
         return QObject::tr("Cone step mapping: safe steps as large as the cone map allows. Needs "
                            "a cone map (Maps > Bake cone).");
     case Technique::RelaxedCone:
-        return QObject::tr("Relaxed cone stepping and binary search. Needs a relaxed cone map "
-                           "(Maps > Bake relaxed cone).");
+        return QObject::tr("Relaxed cone stepping, then the cells of the last step solved exactly. "
+                           "Needs a relaxed cone map (Maps > Bake relaxed cone).");
     case Technique::Pyramid:
         return QObject::tr("Maximum-mipmap traversal: skips empty space level by level, exact "
                            "cell solve at the end.");
