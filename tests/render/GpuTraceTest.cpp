@@ -1,6 +1,9 @@
 // GPU == CPU: the canonical trace scene on the GPU (the shaders/trace kernels compiled as GLSL)
 // against the CPU Tracer (the same kernels compiled as C++), every technique, both wrap modes,
 // straight-down to grazing views, far-from-origin tiles: hit uv within 1e-3 texel, same fetches.
+// llvmpipe evaluates the verify kernels as the CPU does, to the bit; a real GPU's compiler may
+// round a loop's test otherwise (an H100 took one fetch fewer on 1 ray of 1440 at 89 degrees, same
+// hit), so there fetch counts may differ by a fetch or two on at most 0.5% of the rays.
 
 #include "GpuTracer.h"
 #include "RenderTestSupport.h"
@@ -49,7 +52,8 @@ void GpuTraceTest::gpuEqualsCpu() {
     maps.pyramid = &pyramid;
 
     ShaderCache shaders;
-    long long rays = 0;
+    const bool bitExact = test::glContext()->info().renderer.find("llvmpipe") != std::string::npos;
+    long long rays = 0, fetchesDiffer = 0;
     double worst = 0.0;
     for (const TechniqueInfo& technique : allTechniques()) {
         for (float scale : {0.0f, 0.05f, 0.3f}) {
@@ -91,7 +95,10 @@ void GpuTraceTest::gpuEqualsCpu() {
                                 .arg(b.fetches)
                                 .arg(error);
                         QVERIFY2(error <= 1e-3, qPrintable(where));
-                        QVERIFY2(a.fetches == b.fetches, qPrintable(where));
+                        if (bitExact)
+                            QVERIFY2(a.fetches == b.fetches, qPrintable(where));
+                        QVERIFY2(std::abs(a.fetches - b.fetches) <= 2, qPrintable(where));
+                        fetchesDiffer += a.fetches != b.fetches;
                         ++rays;
                         worst = std::max(worst, error);
                     }
@@ -100,7 +107,11 @@ void GpuTraceTest::gpuEqualsCpu() {
         }
     }
     QVERIFY(rays > 10000);
-    qInfo("%lld rays, every fetch count equal, largest hit difference %.3g texel", rays, worst);
+    QVERIFY2(
+        fetchesDiffer * 200 <= rays,
+        qPrintable(QString("fetch counts differ on %1 of %2 rays").arg(fetchesDiffer).arg(rays)));
+    qInfo("%lld rays, fetch counts differ on %lld, largest hit difference %.3g texel", rays,
+          fetchesDiffer, worst);
 }
 
 // Without derived maps in TraceMaps the GPU tracer bakes them as the CPU Tracer does: same answers.
