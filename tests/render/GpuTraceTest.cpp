@@ -2,7 +2,7 @@
 // against the CPU Tracer (the same kernels compiled as C++), every technique, both wrap modes,
 // straight-down to grazing views, far-from-origin tiles: hit uv within 1e-3 texel, same fetches.
 // llvmpipe evaluates the verify kernels as the CPU does, to the bit; a real GPU's compiler may
-// round a loop's test otherwise (an H100 took one fetch fewer on 1 ray of 1440 at 89 degrees, same
+// round a loop's test otherwise (an H100 took one fetch fewer on a cone ray at 89 degrees, same
 // hit), so there fetch counts may differ by a fetch or two on at most 0.5% of the rays.
 
 #include "GpuTracer.h"
