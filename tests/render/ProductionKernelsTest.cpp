@@ -63,6 +63,10 @@ void ProductionKernelsTest::productionErrorMatchesVerifyAtEveryBenchAngle() {
     const double polars[] = {30.0, 60.0, 80.0, 87.0};
 
     ShaderCache shaders;
+    // llvmpipe filters with exact weights; a GPU with 8-bit weights moves more near-ties (an H100:
+    // relief at 87 degrees, 1.5% of the rays): there the bound follows the 8-bit CPU model.
+    const bool exactWeights =
+        test::glContext()->info().renderer.find("llvmpipe") != std::string::npos;
     QStringList failures;
     qInfo("technique     polar  p99 verify  p99 production  |diff|  rays > 0.05 apart  max apart  "
           "fetches verify/production");
@@ -71,7 +75,7 @@ void ProductionKernelsTest::productionErrorMatchesVerifyAtEveryBenchAngle() {
             continue;
         for (double polar : polars) {
             HitErrorAccumulator verifyErrors, productionErrors, eightBitErrors;
-            long long apart = 0, rays = 0;
+            long long apart = 0, modelApart = 0, rays = 0;
             double maxApart = 0.0;
             for (const SampleMaps& sample : samples) {
                 for (float scale : scales) {
@@ -98,7 +102,8 @@ void ProductionKernelsTest::productionErrorMatchesVerifyAtEveryBenchAngle() {
                         Tracer::create(maps, technique.id, technique.defaults, scale);
                     QVERIFY(model.ok());
                     model->modelTextureUnit(8);
-                    eightBitErrors.add(traceScene(*model, scene), reference, size, size);
+                    const std::vector<TraceResult> eightBit = traceScene(*model, scene);
+                    eightBitErrors.add(eightBit, reference, size, size);
                     verifyErrors.add(*verify, reference, size, size);
                     productionErrors.add(*production, reference, size, size);
                     for (std::size_t k = 0; k < reference.size(); ++k) {
@@ -108,6 +113,7 @@ void ProductionKernelsTest::productionErrorMatchesVerifyAtEveryBenchAngle() {
                                  "a production hit is not a valid hit");
                         const double d = hitErrorTexels((*verify)[k], p, size, size);
                         apart += d > 0.05;
+                        modelApart += hitErrorTexels((*verify)[k], eightBit[k], size, size) > 0.05;
                         maxApart = std::max(maxApart, d);
                         ++rays;
                     }
@@ -118,9 +124,9 @@ void ProductionKernelsTest::productionErrorMatchesVerifyAtEveryBenchAngle() {
             const HitErrorStats e = eightBitErrors.stats();
             const double diff = std::abs(p.p99Error - v.p99Error);
             qInfo("%-13s %5.0f  %10.4g  %14.4g  %6.4f  %17lld  %9.3g  %.2f / %.2f   8-bit model "
-                  "p99 %.4g (%+.4g)",
+                  "p99 %.4g (%+.4g), %lld rays > 0.05 from verify",
                   technique.name.data(), polar, v.p99Error, p.p99Error, diff, apart, maxApart,
-                  v.meanFetches, p.meanFetches, e.p99Error, e.p99Error - v.p99Error);
+                  v.meanFetches, p.meanFetches, e.p99Error, e.p99Error - v.p99Error, modelApart);
             QCOMPARE(p.invalid, 0);
             if (diff > 0.05)
                 failures << QString("%1 at %2 degrees: p99 %3 (production) against %4 (verify)")
@@ -130,12 +136,17 @@ void ProductionKernelsTest::productionErrorMatchesVerifyAtEveryBenchAngle() {
                                 .arg(v.p99Error);
             // Hardware filtering moves a sample by a rounding: only rays whose march decides on
             // a near-tie may change, a small share of them.
-            if (apart * 100 > rays)
-                failures << QString("%1 at %2 degrees: %3 of %4 rays more than 0.05 texel apart")
+            const long long allowed =
+                exactWeights ? rays / 100 : std::max(rays / 100, 2 * modelApart);
+            if (apart > allowed)
+                failures << QString("%1 at %2 degrees: %3 of %4 rays more than 0.05 texel apart "
+                                    "(allowed %5; the 8-bit model moves %6)")
                                 .arg(technique.name.data())
                                 .arg(polar)
                                 .arg(apart)
-                                .arg(rays);
+                                .arg(rays)
+                                .arg(allowed)
+                                .arg(modelApart);
         }
     }
     QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
