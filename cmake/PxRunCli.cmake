@@ -1,8 +1,10 @@
 # Runs one command and checks its exit status and its output (stdout and stderr together):
 #   cmake -DCOMMAND="a;b;c" -DEXPECT_RC=N [-DEXPECT="regex1;regex2"] [-DREJECT=regex]
-#         [-DCREATES="file1;file2"] [-DUNCHANGED="file=twin;..."] -P PxRunCli.cmake
+#         [-DCREATES="file1;file2"] [-DUNCHANGED="file=twin;..."]
+#         [-DOUT_FILE=file -DOUT_EXPECT=regex] -P PxRunCli.cmake
 # CREATES: files that must exist and be non-empty afterwards. UNCHANGED: each file must still be
-# byte-identical to its twin (what a failed command must leave alone).
+# byte-identical to its twin (what a failed command must leave alone). OUT_FILE: a file the command
+# wrote, whose content must match OUT_EXPECT.
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 set(all "${out}${err}")
 message("${all}")
@@ -35,3 +37,12 @@ foreach(pair IN LISTS UNCHANGED)
     message(FATAL_ERROR "${file} changed (it no longer equals ${twin})")
   endif()
 endforeach()
+if(OUT_FILE)
+  if(NOT EXISTS "${OUT_FILE}")
+    message(FATAL_ERROR "${OUT_FILE} was not written")
+  endif()
+  file(READ "${OUT_FILE}" content)
+  if(NOT content MATCHES "${OUT_EXPECT}")
+    message(FATAL_ERROR "${OUT_FILE} does not match: ${OUT_EXPECT}\n${content}")
+  endif()
+endif()

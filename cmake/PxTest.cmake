@@ -6,6 +6,7 @@
 #
 #   px_add_cli_test(NAME <name> COMMAND <args...> [RC <status>] [EXPECT <regex...>]
 #                   [REJECT <regex>] [CREATES <files...>] [UNCHANGED <file=twin...>]
+#                   [OUT_FILE <file> OUT_EXPECT <regex>]
 #                   [LABELS <labels...>] [ENV <VAR=value...>] [TIMEOUT <seconds>])
 # Runs parallax-cli with the arguments and checks its exit status (RC, default 0) and its output
 # (every EXPECT regex, stdout and stderr together): a failing command needs both, a succeeding one
@@ -45,10 +46,13 @@ endfunction()
 set(PX_RUN_CLI ${CMAKE_CURRENT_LIST_DIR}/PxRunCli.cmake)
 
 function(px_add_cli_test)
-  cmake_parse_arguments(T "FAIL" "NAME;RC;TIMEOUT"
+  cmake_parse_arguments(T "FAIL" "NAME;RC;TIMEOUT;OUT_FILE;OUT_EXPECT"
                         "COMMAND;EXPECT;REJECT;CREATES;UNCHANGED;LABELS;ENV" ${ARGN})
   if(T_FAIL)
     message(FATAL_ERROR "cli.${T_NAME}: FAIL checks no status or message: give RC and EXPECT")
+  endif()
+  if((T_OUT_FILE AND NOT T_OUT_EXPECT) OR (T_OUT_EXPECT AND NOT T_OUT_FILE))
+    message(FATAL_ERROR "cli.${T_NAME}: OUT_FILE and OUT_EXPECT go together")
   endif()
   if(NOT DEFINED T_RC)
     set(T_RC 0)
@@ -66,7 +70,8 @@ function(px_add_cli_test)
   add_test(NAME cli.${T_NAME}
            COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:parallax-cli>;${T_COMMAND}"
                    -DEXPECT_RC=${T_RC} "-DEXPECT=${T_EXPECT}" "-DREJECT=${T_REJECT}"
-                   "-DCREATES=${T_CREATES}" "-DUNCHANGED=${T_UNCHANGED}" -P ${PX_RUN_CLI}
+                   "-DCREATES=${T_CREATES}" "-DUNCHANGED=${T_UNCHANGED}"
+                   "-DOUT_FILE=${T_OUT_FILE}" "-DOUT_EXPECT=${T_OUT_EXPECT}" -P ${PX_RUN_CLI}
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   set(_labels cli ${T_LABELS})
   set_tests_properties(cli.${T_NAME} PROPERTIES LABELS "${_labels}" TIMEOUT ${T_TIMEOUT})
