@@ -8,15 +8,20 @@
 
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
 namespace px {
 
-Result<std::vector<TraceResult>> traceSceneGpu(ShaderCache& shaders, const TraceMaps& maps,
-                                               Technique technique, const TraceParams& params,
-                                               float heightScale, const TraceScene& scene,
-                                               GpuTraceTiming* timing, KernelFlavour kernels) {
+namespace {
+
+// traceSceneGpu's work: `warmup` untimed draws, then `frames` timed ones; the hits are read back
+// only when `hits` is given.
+Status traceOnGpu(ShaderCache& shaders, const TraceMaps& maps, Technique technique,
+                  const TraceParams& params, float heightScale, const TraceScene& scene, int frames,
+                  int warmup, KernelFlavour kernels, GpuTraceTiming& timing,
+                  std::vector<TraceResult>* hits) {
     if (Status s = validate(scene); !s)
         return s.error();
     // The CPU tracer's checks, and its choice of derived maps.
@@ -125,21 +130,22 @@ Result<std::vector<TraceResult>> traceSceneGpu(ShaderCache& shaders, const Trace
     p.use();
     glBindVertexArray(vertexArray.id());
     const FrameTiming t =
-        timeFrames([] { glDrawArrays(GL_TRIANGLES, 0, 3); }, 1, 0, currentGlInfo());
+        timeFrames([] { glDrawArrays(GL_TRIANGLES, 0, 3); }, frames, warmup, currentGlInfo());
     glBindVertexArray(0);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (Status s = checkGlError("tracing on the GPU"); !s)
         return s.error();
-    if (timing) {
-        timing->milliseconds = t.medianMs;
-        timing->gpuTimer = t.gpuTimer;
-        timing->renderer = currentGlInfo().renderer;
-    }
+    timing.milliseconds = t.minMs;
+    timing.gpuTimer = t.gpuTimer;
+    timing.renderer = currentGlInfo().renderer;
+    if (!hits)
+        return success();
 
     // read() puts GL's bottom row (ray row 0) last.
     const Image out = target->read();
-    std::vector<TraceResult> results(static_cast<std::size_t>(R) * R);
+    std::vector<TraceResult>& results = *hits;
+    results.assign(static_cast<std::size_t>(R) * R, TraceResult{});
     for (int j = 0; j < R; ++j) {
         for (int i = 0; i < R; ++i) {
             const std::size_t k = static_cast<std::size_t>(j) * R + i;
@@ -151,7 +157,36 @@ Result<std::vector<TraceResult>> traceSceneGpu(ShaderCache& shaders, const Trace
             r.fetches = static_cast<int>(std::lround(out.at(i, row, 3)));
         }
     }
-    return results;
+    return success();
+}
+
+} // namespace
+
+Result<std::vector<TraceResult>> traceSceneGpu(ShaderCache& shaders, const TraceMaps& maps,
+                                               Technique technique, const TraceParams& params,
+                                               float heightScale, const TraceScene& scene,
+                                               GpuTraceTiming* timing, KernelFlavour kernels) {
+    GpuTraceTiming measured;
+    std::vector<TraceResult> hits;
+    if (Status s = traceOnGpu(shaders, maps, technique, params, heightScale, scene, 1, 0, kernels,
+                              measured, &hits);
+        !s)
+        return s.error();
+    if (timing)
+        *timing = measured;
+    return hits;
+}
+
+Result<GpuTraceTiming> timeSceneGpu(ShaderCache& shaders, const TraceMaps& maps,
+                                    Technique technique, const TraceParams& params,
+                                    float heightScale, const TraceScene& scene, int frames,
+                                    KernelFlavour kernels) {
+    GpuTraceTiming measured;
+    if (Status s = traceOnGpu(shaders, maps, technique, params, heightScale, scene,
+                              std::max(frames, 1), 1, kernels, measured, nullptr);
+        !s)
+        return s.error();
+    return measured;
 }
 
 } // namespace px

@@ -13,7 +13,7 @@
 namespace px {
 
 struct GpuTraceTiming {
-    double milliseconds = 0.0; // the trace pass alone (glFinish before and after)
+    double milliseconds = 0.0; // the trace pass alone, the fastest of the timed draws
     bool gpuTimer = false;     // measured with a GL timer query (real GPUs) or a steady clock
     std::string renderer;      // GL_RENDERER of the context that traced
 };
@@ -29,6 +29,14 @@ Result<std::vector<TraceResult>> traceSceneGpu(ShaderCache& shaders, const Trace
                                                float heightScale, const TraceScene& scene,
                                                GpuTraceTiming* timing = nullptr,
                                                KernelFlavour kernels = KernelFlavour::Verify);
+
+// The trace pass of traceSceneGpu drawn `frames` times after one untimed warm-up, the fastest
+// reported, without reading the hits back: what a bench times per setting. The set-up (ray
+// origins, uploads, the target) is done once, so a 1440 x 1440 sweep costs one set-up a setting.
+Result<GpuTraceTiming> timeSceneGpu(ShaderCache& shaders, const TraceMaps& maps,
+                                    Technique technique, const TraceParams& params,
+                                    float heightScale, const TraceScene& scene, int frames,
+                                    KernelFlavour kernels = KernelFlavour::Verify);
 
 } // namespace px
 

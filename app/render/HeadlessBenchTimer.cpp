@@ -34,18 +34,13 @@ Result<GpuFrameTiming> HeadlessBenchTimer::time(const GpuFrameRequest& r) {
     scene.azimuthDeg = r.azimuthDeg;
     const Technique technique = r.setting->technique;
     const TraceParams& params = r.setting->params;
-    double best = 0.0;
-    bool timerQuery = false;
-    for (int frame = 0; frame <= m_options.frames; ++frame) {
-        GpuTraceTiming timing;
-        Result<std::vector<TraceResult>> hits = traceSceneGpu(
-            m_shaders, r.maps, technique, params, r.scale, scene, &timing, m_options.kernels);
-        if (!hits)
-            return Error{"no GPU timing: " + hits.error().message};
-        if (frame == 1 || (frame > 1 && timing.milliseconds < best))
-            best = timing.milliseconds;
-        timerQuery = timing.gpuTimer;
-    }
+    // One set-up, one warm-up draw, then the timed draws: the fastest is the setting's time.
+    Result<GpuTraceTiming> timing = timeSceneGpu(m_shaders, r.maps, technique, params, r.scale,
+                                                 scene, m_options.frames, m_options.kernels);
+    if (!timing)
+        return Error{"no GPU timing: " + timing.error().message};
+    const double best = timing->milliseconds;
+    const bool timerQuery = timing->gpuTimer;
     const double traced = double(scene.rays) * scene.rays;
     std::string label =
         m_label + (timerQuery ? ", GL timer query" : ", steady clock around glFinish");
