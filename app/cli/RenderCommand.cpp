@@ -5,6 +5,7 @@
 #include "FrameTimer.h"
 #include "HeadlessContext.h"
 #include "Renderer.h"
+#include "parallax/eval/AutoTechnique.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/MaterialNames.h"
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -108,6 +110,8 @@ Result<Material> materialFrom(const RenderOptions& o, MaterialAssets& assets) {
             return loaded.error();
         m = *loaded;
     }
+    if (o.technique)
+        m.autoQuality.reset(); // a technique named on the command line replaces "auto"
     if (o.technique && *parseTechnique(*o.technique) != m.technique) {
         // Another technique than the material's: its own default parameters.
         m.technique = *parseTechnique(*o.technique);
@@ -137,6 +141,22 @@ Result<Material> materialFrom(const RenderOptions& o, MaterialAssets& assets) {
         Result<MaterialAssets> loaded = loadMaterialAssets(m, o.material, mapsUsed(m));
         if (!loaded)
             return loaded.error();
+        if (m.autoQuality) {
+            // Technique "auto": measured on this material's height map, as export resolves it;
+            // then the maps the chosen setting reads (a cone map for the cone techniques).
+            Result<ResolvedAuto> resolved = resolveAutoTechnique(m, loaded->height, loaded->cone,
+                                                                 loaded->relaxedCone, o.material);
+            if (!resolved)
+                return resolved.error();
+            m = resolved->material;
+            std::cout << "note: " << resolved->note << "\n";
+            o.quality.applyTo(m.params); // --layers and the like adjust the chosen setting
+            if (Status s = validate(m.params); !s)
+                return s.error();
+            loaded = loadMaterialAssets(m, o.material, mapsUsed(m));
+            if (!loaded)
+                return loaded.error();
+        }
         assets = std::move(*loaded);
         return m;
     }
