@@ -18,7 +18,7 @@ Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const Height
     config.wrap = material.wrap;
     config.scale = material.heightScale;
     config.maxPolarDeg = material.autoQuality->maxPolar;
-    config.budget.texels = material.autoQuality->budget;
+    config.budget.texels = material.autoQuality->budgetTexels();
     if (!cone.sqrtRatio.empty())
         config.cone = std::make_shared<ConeMap>(cone);
     if (!relaxedCone.sqrtRatio.empty())
@@ -34,9 +34,15 @@ Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const Height
     const BenchSetting& s = r->chosen.setting;
     char cost[64];
     std::snprintf(cost, sizeof cost, "%.3g fetches per ray", r->chosen.cost);
-    char budget[96];
-    std::snprintf(budget, sizeof budget, "p99 <= %g texel up to %g degrees", config.budget.texels,
-                  config.maxPolarDeg);
+    char budget[160];
+    const AutoQuality& q = *material.autoQuality;
+    if (q.budgetPixels && q.texelsPerPixel)
+        std::snprintf(budget, sizeof budget,
+                      "p99 <= %g texel (%g pixel at %g texels per pixel) up to %g degrees",
+                      config.budget.texels, *q.budgetPixels, *q.texelsPerPixel, config.maxPolarDeg);
+    else
+        std::snprintf(budget, sizeof budget, "p99 <= %g texel up to %g degrees",
+                      config.budget.texels, config.maxPolarDeg);
     resolved.note = "technique auto resolved to " + std::string(info(s.technique).name) +
                     (s.label.empty() ? "" : " (" + s.label + ")") + ": the cheapest setting " +
                     "meeting " + budget + ", " + cost;

@@ -219,13 +219,30 @@ void readBody(const json& root, Reader& r, Material& m) {
     if (const json* t = r.member(root, "technique");
         t && r.object(*t, "/technique",
                       {"name", "minLayers", "maxLayers", "binarySteps", "secantSteps", "maxSteps",
-                       "budget", "maxPolar"})) {
+                       "budget", "maxPolar", "budgetPixels", "texelsPerPixel"})) {
         std::vector<std::string_view> names = techniqueNames();
         names.push_back("auto");
         if (const json* n = r.member(*t, "name"); n && n->is_string() && *n == "auto") {
             AutoQuality q;
             r.number(*t, "/technique", "budget", kAutoBudget, q.budget);
             r.number(*t, "/technique", "maxPolar", kAutoMaxPolar, q.maxPolar);
+            const bool pixels = r.member(*t, "budgetPixels"),
+                       density = r.member(*t, "texelsPerPixel");
+            if (pixels != density)
+                r.add("/technique", "budgetPixels and texelsPerPixel go together (a budget in "
+                                    "pixels needs the texels one pixel covers)");
+            else if (pixels && r.member(*t, "budget"))
+                r.add("/technique", "give budget (texels) or budgetPixels, not both");
+            if (pixels && density) {
+                float p = 0.0f, d = 0.0f;
+                const std::size_t before = r.problems.size();
+                r.number(*t, "/technique", "budgetPixels", kAutoBudget, p);
+                r.number(*t, "/technique", "texelsPerPixel", kTexelsPerPixel, d);
+                if (r.problems.size() == before) {
+                    q.budgetPixels = p;
+                    q.texelsPerPixel = d;
+                }
+            }
             m.autoQuality = q;
         } else {
             r.enumeration(*t, "/technique", "name", parseTechnique, names, m.technique);
@@ -332,7 +349,12 @@ std::string materialToJson(const Material& m) {
                       {"scale", shortestDecimal(m.heightScale)}};
     root["wrap"] = toString(m.wrap);
     root["tiling"] = shortestDecimal(m.tiling);
-    if (m.autoQuality)
+    if (m.autoQuality && m.autoQuality->budgetPixels && m.autoQuality->texelsPerPixel)
+        root["technique"] = {{"name", "auto"},
+                             {"budgetPixels", shortestDecimal(*m.autoQuality->budgetPixels)},
+                             {"texelsPerPixel", shortestDecimal(*m.autoQuality->texelsPerPixel)},
+                             {"maxPolar", shortestDecimal(m.autoQuality->maxPolar)}};
+    else if (m.autoQuality)
         root["technique"] = {{"name", "auto"},
                              {"budget", shortestDecimal(m.autoQuality->budget)},
                              {"maxPolar", shortestDecimal(m.autoQuality->maxPolar)}};

@@ -15,6 +15,7 @@ inline constexpr NumberRange kHeightScale{0.0, 100.0};
 inline constexpr NumberRange kTiling{0.001, 10000.0};
 // technique "auto": p99 budget in texels, steepest view angle in degrees
 inline constexpr NumberRange kAutoBudget{0.0, 1e6};
+inline constexpr NumberRange kTexelsPerPixel{1e-6, 1e6};
 inline constexpr NumberRange kAutoMaxPolar{0.0, 89.0};
 inline constexpr NumberRange kUnit{0.0, 1.0}; // softness, roughness, metallic, specular
 inline constexpr NumberRange kShininess{1.0, 10000.0};

@@ -24,6 +24,7 @@ private slots:
     void init() { clearRecommendationCache(); }
     void readAndWrittenInTheMaterialFile();
     void outOfRangeIsRefused();
+    void pixelBudget();
     void resolvesToTheRecommendation();
     void exportCarriesTheChoice();
 };
@@ -73,6 +74,60 @@ void AutoTechniqueTest::outOfRangeIsRefused() {
     QVERIFY2(message.contains("bad.json: /technique/budget: expected a number") &&
                  message.contains("bad.json: /technique/maxPolar: expected a number"),
              qPrintable(message));
+}
+
+// A budget in pixels: budgetPixels x texelsPerPixel texels, written back as given, both or neither.
+void AutoTechniqueTest::pixelBudget() {
+    const char* text = R"({"format": "parallax-studio-material", "version": 1,
+      "maps": {"height": "h.png"},
+      "technique": {"name": "auto", "budgetPixels": 0.5, "texelsPerPixel": 0.5, "maxPolar": 70}})";
+    Result<Material> m = parseMaterial(text, "px.json");
+    QVERIFY2(m.ok(), m.ok() ? "" : m.error().message.c_str());
+    QVERIFY(m->autoQuality && m->autoQuality->budgetPixels && m->autoQuality->texelsPerPixel);
+    QCOMPARE(m->autoQuality->budgetTexels(), 0.25f);
+    const std::string json = materialToJson(*m);
+    QVERIFY2(json.find("\"budgetPixels\": 0.5,\n    \"texelsPerPixel\": 0.5") !=
+                     std::string::npos &&
+                 json.find("\"budget\":") == std::string::npos,
+             json.c_str());
+    Result<Material> again = parseMaterial(json, "again.json");
+    QVERIFY(again.ok() && again->autoQuality && again->autoQuality->budgetTexels() == 0.25f);
+
+    // Resolved as the same budget in texels would be, and the note says both.
+    const HeightField field = makeProceduralMap(ProceduralMap::Stones, 64, 64, 4);
+    Result<ResolvedAuto> byPixels = resolveAutoTechnique(*m, field, {}, {}, "px.json");
+    Result<Material> texels = parseMaterial(kAutoMaterial, "auto.json"); // budget 0.25, 70 degrees
+    QVERIFY(byPixels.ok() && texels.ok());
+    Result<ResolvedAuto> byTexels = resolveAutoTechnique(*texels, field, {}, {}, "auto.json");
+    QVERIFY(byTexels.ok());
+    QCOMPARE(byPixels->material.technique, byTexels->material.technique);
+    QCOMPARE(byPixels->material.params.maxSteps, byTexels->material.params.maxSteps);
+    QCOMPARE(byPixels->material.params.maxLayers, byTexels->material.params.maxLayers);
+    QVERIFY2(byPixels->note.find("p99 <= 0.25 texel (0.5 pixel at 0.5 texels per pixel) up to 70 "
+                                 "degrees") != std::string::npos,
+             byPixels->note.c_str());
+
+    // One without the other, both budgets, a density of 0: refused, each saying why.
+    const struct {
+        const char* technique;
+        const char* expected;
+    } bad[] = {
+        {R"({"name": "auto", "budgetPixels": 1})", "budgetPixels and texelsPerPixel go together"},
+        {R"({"name": "auto", "texelsPerPixel": 2})", "budgetPixels and texelsPerPixel go together"},
+        {R"({"name": "auto", "budget": 1, "budgetPixels": 1, "texelsPerPixel": 2})",
+         "give budget (texels) or budgetPixels, not both"},
+        {R"({"name": "auto", "budgetPixels": 1, "texelsPerPixel": 0})",
+         "/technique/texelsPerPixel: expected a number"},
+    };
+    for (const auto& b : bad) {
+        const std::string doc = std::string(R"({"format": "parallax-studio-material", "version": 1,
+          "maps": {"height": "h.png"}, "technique": )") +
+                                b.technique + "}";
+        Result<Material> refused = parseMaterial(doc, "bad.json");
+        QVERIFY2(!refused.ok(), b.technique);
+        QVERIFY2(refused.error().message.find(b.expected) != std::string::npos,
+                 refused.error().message.c_str());
+    }
 }
 
 void AutoTechniqueTest::resolvesToTheRecommendation() {

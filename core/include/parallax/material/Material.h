@@ -48,6 +48,13 @@ struct MaterialMaps {
 struct AutoQuality {
     float budget = 0.5f;
     float maxPolar = 80.0f;
+    // A budget in screen pixels instead: `budgetPixels` x `texelsPerPixel` texels (the texel
+    // density where the material is seen most closely), both set or neither.
+    std::optional<float> budgetPixels;
+    std::optional<float> texelsPerPixel;
+    float budgetTexels() const {
+        return budgetPixels && texelsPerPixel ? *budgetPixels * *texelsPerPixel : budget;
+    }
 };
 
 struct Material {
