@@ -16,28 +16,24 @@ namespace {
 
 constexpr int kLineBase = 10000; // shader files stay under 10000 lines
 
-// The library every stage may draw from, in declaration order (as TraceKernel.h includes the
-// kernels); the stage's main file comes last. Unreachable items are dropped.
+// The library every stage may draw from, in declaration order: the bindings, the trace kernels
+// as shaders/trace/kernels.glsl lists them (the list the C++ kernels include), then the render
+// files; the stage's main file comes last. Unreachable items are dropped.
 const std::vector<std::string>& libraryFiles() {
-    static const std::vector<std::string> files{
-        "render/bindings.glsl",
-        "trace/common.glsl",
-        "trace/walk.glsl",
-        "trace/exact.glsl",
-        "trace/offset.glsl",
-        "trace/march.glsl",
-        "trace/steep.glsl",
-        "trace/pom.glsl",
-        "trace/relief.glsl",
-        "trace/secant.glsl",
-        "trace/cone_conservative.glsl",
-        "trace/cone_relaxed.glsl",
-        "trace/pyramid.glsl",
-        "trace/shadow.glsl",
-        "trace/normals.glsl",
-        "render/techniques.glsl",
-        "render/lighting.glsl",
-    };
+    static const std::vector<std::string> files = [] {
+        std::vector<std::string> f{"render/bindings.glsl"};
+        std::string_view list = shader::embeddedFile("trace/kernels.glsl").value_or("");
+        constexpr std::string_view kInclude = "#include \"";
+        while (!list.empty()) {
+            const std::string_view line = list.substr(0, list.find('\n'));
+            list.remove_prefix(std::min(list.size(), line.size() + 1));
+            if (line.starts_with(kInclude) && line.ends_with('"'))
+                f.emplace_back(line.substr(kInclude.size(), line.size() - kInclude.size() - 1));
+        }
+        f.emplace_back("render/techniques.glsl");
+        f.emplace_back("render/lighting.glsl");
+        return f;
+    }();
     return files;
 }
 
