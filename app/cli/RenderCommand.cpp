@@ -2,13 +2,13 @@
 
 #include "Cli.h"
 #include "CommonOptions.h"
-#include "FrameTimer.h"
-#include "HeadlessContext.h"
-#include "Renderer.h"
 #include "parallax/eval/AutoTechnique.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/MaterialNames.h"
+#include "parallax/render/FrameTimer.h"
+#include "parallax/render/HeadlessContext.h"
+#include "parallax/render/Renderer.h"
 #include "parallax/shader/VariantKey.h"
 #include "parallax/trace/Tracer.h"
 

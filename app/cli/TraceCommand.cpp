@@ -2,9 +2,9 @@
 
 #include "Cli.h"
 #include "CommonOptions.h"
-#include "GpuTracer.h"
 #include "parallax/eval/HitErrorStats.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/render/GpuTracer.h"
 #include "parallax/trace/ParallaxBound.h"
 #include "parallax/trace/TraceScene.h"
 

@@ -1,12 +1,12 @@
 #include "Studio.h"
 
-#include "GlSupport.h"
-#include "GlUnavailableDialog.h"
-#include "MainWindow.h"
-#include "Screenshot.h"
 #include "StudioOptions.h"
-#include "Viewport.h"
-#include "ViewportGrid.h"
+#include "preview/GlSupport.h"
+#include "preview/GlUnavailableDialog.h"
+#include "preview/Viewport.h"
+#include "preview/ViewportGrid.h"
+#include "window/MainWindow.h"
+#include "window/Screenshot.h"
 
 #include <QApplication>
 #include <QIcon>

@@ -9,8 +9,8 @@
 
 #include "GoldenPolicy.h"
 #include "RenderTestSupport.h"
-#include "Renderer.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/render/Renderer.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -5,9 +5,9 @@
 // round a loop's test otherwise (an H100 took one fetch fewer on a cone ray at 89 degrees, same
 // hit), so there fetch counts may differ by a fetch or two on at most 0.5% of the rays.
 
-#include "GpuTracer.h"
 #include "RenderTestSupport.h"
 #include "parallax/bake/ConeMapBaker.h"
+#include "parallax/render/GpuTracer.h"
 #include "parallax/sample/ProceduralMaps.h"
 
 #include <QtTest>

@@ -1,9 +1,9 @@
 // The headless context: OpenGL 4.3 core or better with no display, and a clear refusal otherwise.
 
-#include "HeadlessContext.h"
+#include "parallax/render/HeadlessContext.h"
 
-#include "GlInfo.h"
 #include "RenderTestSupport.h"
+#include "parallax/render/GlInfo.h"
 
 #include <QtTest>
 #include <cstdlib>

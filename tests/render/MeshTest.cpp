@@ -2,9 +2,9 @@
 // normals point outwards, triangles wind counter-clockwise seen from outside. And the camera's
 // angle conventions.
 
-#include "Mesh.h"
+#include "parallax/render/Mesh.h"
 
-#include "Camera.h"
+#include "parallax/render/Camera.h"
 
 #include <QtTest>
 #include <glm/geometric.hpp>

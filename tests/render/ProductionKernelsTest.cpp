@@ -4,10 +4,10 @@
 // p99 errors, pooled over the maps and scales as the bench pools them, must agree within 0.05
 // texel; every ray is compared too, and what differs is reported.
 
-#include "GpuTracer.h"
 #include "RenderTestSupport.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/eval/HitErrorStats.h"
+#include "parallax/render/GpuTracer.h"
 #include "parallax/sample/ProceduralMaps.h"
 
 #include <QtTest>

@@ -7,10 +7,10 @@
 //   render-bench [--sizes=WxH,...] [--csv=FILE] [--benchmark_filter=512]
 //                [--benchmark_repetitions=N]   (N > 1: medians)
 
-#include "FrameTimer.h"
 #include "RenderTestSupport.h"
-#include "Renderer.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/render/FrameTimer.h"
+#include "parallax/render/Renderer.h"
 
 #include <benchmark/benchmark.h>
 #include <cstdio>

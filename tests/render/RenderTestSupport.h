@@ -2,10 +2,10 @@
 // What the GL tests share: one headless context per test process, the sample material, and
 // image comparison.
 
-#include "HeadlessContext.h"
 #include "parallax/image/Image.h"
 #include "parallax/material/Material.h"
 #include "parallax/material/MaterialAssets.h"
+#include "parallax/render/HeadlessContext.h"
 #include "parallax/trace/Tracer.h"
 
 #include <memory>

@@ -2,10 +2,10 @@
 // the two tangent-frame paths agree, clamp silhouettes, bakes only for what the technique reads,
 // 16-bit heights stay 16-bit, uniform changes never recompile, no NaN at grazing views.
 
-#include "Renderer.h"
+#include "parallax/render/Renderer.h"
 
 #include "RenderTestSupport.h"
-#include "TextureUpload.h"
+#include "parallax/render/TextureUpload.h"
 #include "parallax/sample/ProceduralMaps.h"
 #include "parallax/trace/Tracer.h"
 

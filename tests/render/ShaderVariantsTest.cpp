@@ -3,7 +3,7 @@
 // features, independent of the generator, is compared with both GL and the generator.
 
 #include "RenderTestSupport.h"
-#include "ShaderProgram.h"
+#include "parallax/render/ShaderProgram.h"
 
 #include <QtTest>
 #include <algorithm>

@@ -1,7 +1,7 @@
 // A view's error readout over rendered hits: the bench's statistics, so a few pixels on another
 // surface show as such (max error, share on another surface) instead of a mean above the p99.
 
-#include "ErrorStats.h"
+#include "preview/ErrorStats.h"
 
 #include <QTest>
 #include <algorithm>

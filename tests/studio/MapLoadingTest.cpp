@@ -1,10 +1,10 @@
 // Loading and saving maps and materials: bad files change nothing and name themselves, saved
 // materials reopen equal, maps are recognised by their suffix.
 
-#include "MapLoading.h"
+#include "model/MapLoading.h"
 
-#include "MaterialSaver.h"
-#include "SampleMaterial.h"
+#include "model/MaterialSaver.h"
+#include "model/SampleMaterial.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"

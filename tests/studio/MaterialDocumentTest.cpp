@@ -1,9 +1,9 @@
 // The document model: every edit is one undo step, slider drags merge, undo restores the previous
 // state exactly, and only saved settings make the document dirty.
 
-#include "MaterialDocument.h"
+#include "model/MaterialDocument.h"
 
-#include "SampleMaterial.h"
+#include "model/SampleMaterial.h"
 
 #include <QSignalSpy>
 #include <QTest>

@@ -4,13 +4,13 @@
 // reading in one click; the name field, "auto" green, a stale baked normal map and baking over
 // a loaded one.
 
-#include "Baking.h"
-#include "ImportSummaryDialog.h"
-#include "MapRow.h"
-#include "MapsPanel.h"
-#include "MaterialPanel.h"
 #include "StudioTestSupport.h"
 #include "TextureSets.h"
+#include "jobs/Baking.h"
+#include "panels/ImportSummaryDialog.h"
+#include "panels/MapRow.h"
+#include "panels/MapsPanel.h"
+#include "panels/MaterialPanel.h"
 
 #include <QCheckBox>
 #include <QComboBox>

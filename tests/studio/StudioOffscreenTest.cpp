@@ -2,23 +2,23 @@
 // the live preview, the "no OpenGL 4.3" message, the Compare panel (bench in the background,
 // progress, cancel, a click on the plot applies a setting), the command line, export, saving.
 
-#include "Baking.h"
-#include "ComparePanel.h"
-#include "ExportDialog.h"
-#include "GlUnavailableDialog.h"
-#include "MapRow.h"
-#include "MapsPanel.h"
-#include "MaterialPanel.h"
-#include "RangeSlider.h"
-#include "RecentFiles.h"
-#include "SampleMaterial.h"
-#include "SliderField.h"
 #include "StudioOptions.h"
 #include "StudioTestSupport.h"
-#include "TechniquePanel.h"
-#include "WorkPrecisionView.h"
+#include "jobs/Baking.h"
+#include "model/SampleMaterial.h"
+#include "panels/ComparePanel.h"
+#include "panels/ExportDialog.h"
+#include "panels/MapRow.h"
+#include "panels/MapsPanel.h"
+#include "panels/MaterialPanel.h"
+#include "panels/TechniquePanel.h"
+#include "panels/WorkPrecisionView.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/material/MaterialFile.h"
+#include "preview/GlUnavailableDialog.h"
+#include "widgets/RangeSlider.h"
+#include "widgets/SliderField.h"
+#include "window/RecentFiles.h"
 
 #include <QAbstractButton>
 #include <QAction>

@@ -2,12 +2,12 @@
 // What the editor's GUI tests share: a small window on a small sample, waiting for frames and
 // figures, and dropping files on a widget the way a file manager does.
 
-#include "GlSupport.h"
-#include "MainWindow.h"
-#include "MaterialDocument.h"
-#include "PreviewWidget.h"
-#include "Viewport.h"
-#include "ViewportGrid.h"
+#include "model/MaterialDocument.h"
+#include "preview/GlSupport.h"
+#include "preview/PreviewWidget.h"
+#include "preview/Viewport.h"
+#include "preview/ViewportGrid.h"
+#include "window/MainWindow.h"
 
 #include <QCoreApplication>
 #include <QDir>

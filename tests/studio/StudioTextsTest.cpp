@@ -2,8 +2,8 @@
 // origin), the shortcut list is grouped by menu with every shortcut once, and its dialog's title
 // is not cut.
 
-#include "Hints.h"
 #include "StudioTestSupport.h"
+#include "widgets/Hints.h"
 
 #include <QAction>
 #include <QDialog>

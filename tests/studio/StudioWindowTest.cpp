@@ -2,17 +2,17 @@
 // and the shader's uniforms, viewports trace different techniques, files load by drag and drop,
 // baking a cone map enables the cone technique, undo restores, and a corrupt file changes nothing.
 
-#include "MapRow.h"
-#include "MapsPanel.h"
-#include "MaterialPanel.h"
-#include "SliderField.h"
 #include "StudioTestSupport.h"
-#include "TechniqueCombo.h"
-#include "TechniquePanel.h"
-#include "ViewPanel.h"
+#include "panels/MapRow.h"
+#include "panels/MapsPanel.h"
+#include "panels/MaterialPanel.h"
+#include "panels/TechniquePanel.h"
+#include "panels/ViewPanel.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
+#include "widgets/SliderField.h"
+#include "widgets/TechniqueCombo.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,9 +1,9 @@
 // Undo as an artist uses it: Ctrl+Z works while a spin box has focus, a save followed by undo and
 // redo leaves the saved maps saved, and viewports' techniques stay out of the material's history.
 
-#include "MaterialPanel.h"
-#include "SliderField.h"
 #include "StudioTestSupport.h"
+#include "panels/MaterialPanel.h"
+#include "widgets/SliderField.h"
 
 #include <QDoubleSpinBox>
 #include <QUndoStack>

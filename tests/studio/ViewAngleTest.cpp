@@ -1,10 +1,10 @@
 // The orbit camera stays above the material's surface whatever the drag, and the camera's polar
 // angle can be typed, so a given grazing angle can be reached and compared.
 
-#include "SliderField.h"
 #include "StudioTestSupport.h"
-#include "ViewInteraction.h"
-#include "ViewPanel.h"
+#include "panels/ViewPanel.h"
+#include "preview/ViewInteraction.h"
+#include "widgets/SliderField.h"
 
 #include <QDoubleSpinBox>
 

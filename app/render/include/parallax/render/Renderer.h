@@ -1,0 +1,73 @@
+#pragma once
+// The renderer the editor and the command line share. It owns the per-context GL state (meshes,
+// compiled variants) and draws one material on one mesh into the bound framebuffer.
+//
+// Editor use: one Renderer per QOpenGLWidget context, created in initializeGL(); several views
+// share one OrbitCamera and DirectionalLight and each passes its own Material copy (technique,
+// quality, shadow, normal source, lighting: the per-view settings) to draw() in paintGL(). Every
+// parameter is a uniform, set on each draw: moving a slider never recompiles; only a new feature
+// set compiles a new variant, once (ShaderCache). renderImage() draws offscreen and reads the
+// frame back.
+
+#include "parallax/material/Material.h"
+#include "parallax/render/Camera.h"
+#include "parallax/render/GlInfo.h"
+#include "parallax/render/GpuMaterial.h"
+#include "parallax/render/Mesh.h"
+#include "parallax/render/RenderTarget.h"
+#include "parallax/render/ShaderCache.h"
+
+#include <glm/vec4.hpp>
+#include <map>
+#include <memory>
+
+namespace px {
+
+struct DrawOptions {
+    MeshKind mesh = MeshKind::Plane;
+    TbnSource tbn = TbnSource::VertexTangents;
+    ShaderOutput output = ShaderOutput::Color; // Color or Surface (hit data into a float target)
+    // Production: the texture units filter, as an engine's shader would; Verify: the kernels
+    // that match the CPU to the bit.
+    KernelFlavour kernels = KernelFlavour::Production;
+    // Cleared to before drawing, as stored (the colour output is sRGB-encoded); alpha 0 leaves the
+    // background transparent. The Surface output always clears to -1 (t = -1: no surface).
+    glm::vec4 background{0.0f};
+    bool clear = true;
+    glm::vec3 baseColor{1.0f}; // multiplies the albedo map (the colour when there is none)
+    glm::mat4 model{1.0f};
+};
+
+class Renderer {
+public:
+    // Needs a current OpenGL 4.3 context; the error names what the context offers otherwise.
+    static Result<std::unique_ptr<Renderer>> create();
+
+    // The variant this material and these options draw with, given the maps `gpu` has.
+    VariantKey variantFor(const GpuMaterial& gpu, const Material& material,
+                          const DrawOptions& options) const;
+
+    // Draws into the bound draw framebuffer over the viewport (0, 0, size). Prepares the derived
+    // maps the technique reads (baking them if missing) and compiles the variant on first use.
+    Status draw(GpuMaterial& gpu, const Material& material, const OrbitCamera& camera,
+                const DirectionalLight& light, const DrawOptions& options, glm::ivec2 size);
+
+    // Renders offscreen and reads the result back (top row first): sRGB-encoded RGBA for Color,
+    // (u, v, t, fetches) floats for Surface.
+    Result<Image> renderImage(GpuMaterial& gpu, const Material& material, const OrbitCamera& camera,
+                              const DirectionalLight& light, const DrawOptions& options,
+                              glm::ivec2 size);
+
+    ShaderCache& shaders() { return m_shaders; }
+    const GlInfo& glInfo() const { return m_info; }
+
+private:
+    Renderer() = default;
+    const GpuMesh& mesh(MeshKind kind);
+
+    GlInfo m_info;
+    ShaderCache m_shaders;
+    std::map<MeshKind, GpuMesh> m_meshes;
+};
+
+} // namespace px

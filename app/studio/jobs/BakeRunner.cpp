@@ -1,0 +1,132 @@
+#include "jobs/BakeRunner.h"
+
+#include "parallax/bake/ConeMapBaker.h"
+
+#include <QMetaObject>
+#include <QPointer>
+#include <QtConcurrent/QtConcurrentRun>
+#include <chrono>
+#include <cmath>
+
+namespace px::studio {
+
+QString bakeTitle(BakeKind kind) {
+    switch (kind) {
+    case BakeKind::Normal:
+        return QObject::tr("normal map");
+    case BakeKind::Cone:
+        return QObject::tr("cone map");
+    case BakeKind::RelaxedCone:
+        return QObject::tr("relaxed cone map");
+    }
+    return {};
+}
+
+namespace {
+
+BakeOutcome runBake(const BakeRequest& request, const BakeControl& control) {
+    BakeOutcome outcome;
+    outcome.request = request;
+    const auto start = std::chrono::steady_clock::now();
+    const HeightField& field = request.source->height;
+    if (request.kind == BakeKind::Normal) {
+        Result<Image> normal = bakeNormalMap(field, request.normal, control);
+        if (normal)
+            outcome.normal = std::move(*normal);
+        else if (isCancelled(normal.error()))
+            outcome.cancelled = true;
+        else
+            outcome.error = QString::fromStdString(normal.error().message);
+    } else {
+        const ConeKind kind =
+            request.kind == BakeKind::Cone ? ConeKind::Conservative : ConeKind::Relaxed;
+        Result<ConeMap> cone = bakeConeMap(field, request.wrap, kind, control);
+        if (cone)
+            outcome.cone = std::move(*cone);
+        else if (isCancelled(cone.error()))
+            outcome.cancelled = true;
+        else
+            outcome.error = QString::fromStdString(cone.error().message);
+    }
+    outcome.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return outcome;
+}
+
+} // namespace
+
+BakeRunner::BakeRunner(QObject* parent) : QObject(parent) {
+    connect(&m_watcher, &QFutureWatcher<BakeOutcome>::finished, this, &BakeRunner::done);
+}
+
+BakeRunner::~BakeRunner() {
+    m_queue.clear();
+    if (m_cancel)
+        m_cancel->store(true);
+    m_watcher.waitForFinished();
+}
+
+std::optional<BakeKind> BakeRunner::current() const {
+    if (!m_running || !m_runningRequest)
+        return std::nullopt;
+    return m_runningRequest->kind;
+}
+
+void BakeRunner::start(const BakeRequest& request) {
+    m_queue.push_back(request);
+    if (!m_running)
+        next();
+}
+
+void BakeRunner::cancel() {
+    m_queue.clear();
+    if (m_cancel)
+        m_cancel->store(true);
+}
+
+void BakeRunner::next() {
+    if (m_queue.empty()) {
+        emit idle();
+        return;
+    }
+    m_runningRequest = m_queue.front();
+    m_queue.pop_front();
+    m_running = true;
+    m_cancel = std::make_shared<std::atomic<bool>>(false);
+    const BakeKind kind = m_runningRequest->kind;
+    emit started(kind);
+    emit progress(kind, 0.0);
+
+    // Progress comes from the worker: post whole percents only, never paint from there.
+    auto lastPercent = std::make_shared<std::atomic<int>>(-1);
+    QPointer<BakeRunner> self(this);
+    BakeControl control;
+    control.cancel = m_cancel.get();
+    control.progress = [self, kind, lastPercent](float fraction) {
+        const int percent = static_cast<int>(std::floor(fraction * 100.0f));
+        if (lastPercent->exchange(percent) == percent)
+            return;
+        QMetaObject::invokeMethod(
+            self.data(),
+            [self, kind, fraction] {
+                if (self)
+                    emit self->progress(kind, fraction);
+            },
+            Qt::QueuedConnection);
+    };
+    const BakeRequest request = *m_runningRequest;
+    // The cancel flag lives as long as the job: the job holds its own reference.
+    std::shared_ptr<std::atomic<bool>> flag = m_cancel;
+    m_watcher.setFuture(
+        QtConcurrent::run([request, control, flag] { return runBake(request, control); }));
+}
+
+void BakeRunner::done() {
+    BakeOutcome outcome = m_watcher.result();
+    m_running = false;
+    m_runningRequest.reset();
+    emit finished(outcome);
+    next();
+}
+
+} // namespace px::studio

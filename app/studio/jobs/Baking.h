@@ -1,0 +1,25 @@
+#pragma once
+// What a bake reads from the document and how its result goes back in: as a new map made here
+// (saved with the material), and only if the surface it was baked from is still the document's.
+
+#include "jobs/BakeRunner.h"
+#include "model/DocumentState.h"
+#include "parallax/Result.h"
+
+namespace px::studio {
+
+BakeRequest makeBakeRequest(const DocumentState& state, BakeKind kind,
+                            NormalFilter filter = NormalFilter::Sobel);
+
+// The state with the baked map in it (a baked normal map also becomes the normal source).
+// Fails when the height map, wrap mode or (for normals) height scale changed since the bake
+// started: the result describes another surface.
+Result<DocumentState> withBake(const DocumentState& state, const BakeOutcome& outcome);
+
+MapKind mapKindOf(BakeKind kind);
+
+// Why the normal map baked here no longer matches the material (another height scale, or another
+// filter than the panel's), or empty when it does or was not baked here.
+QString staleNormalBake(const DocumentState& state, NormalFilter filter);
+
+} // namespace px::studio

@@ -1,0 +1,135 @@
+#include "model/MaterialSaver.h"
+
+#include "model/MapLoading.h"
+#include "parallax/image/ImageFile.h"
+#include "parallax/material/MaterialFile.h"
+
+#include <cmath>
+#include <filesystem>
+
+namespace px::studio {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// R = height, G = sqrt(ratio) rounded down to 16 bits so a stored cone is never wider.
+Image coneFileImage(const HeightField& height, const ConeMap& cone) {
+    Image image(cone.width, cone.height, 3);
+    for (int y = 0; y < cone.height; ++y) {
+        for (int x = 0; x < cone.width; ++x) {
+            image.at(x, y, 0) = height.at(x, y);
+            image.at(x, y, 1) = std::floor(cone.g(x, y) * 65535.0f) / 65535.0f;
+        }
+    }
+    return image;
+}
+
+Status writeMap(const MaterialAssets& assets, MapKind kind, const std::string& file) {
+    ImageWriteOptions options;
+    options.format = PixelFormat::UInt16;
+    switch (kind) {
+    case MapKind::Height:
+        return writeImage(file, assets.height.toImage(), options);
+    case MapKind::Normal:
+        return writeImage(file, assets.normal, options);
+    case MapKind::Cone:
+        return writeImage(file, coneFileImage(assets.height, assets.cone), options);
+    case MapKind::RelaxedCone:
+        return writeImage(file, coneFileImage(assets.height, assets.relaxedCone), options);
+    case MapKind::Albedo:
+        options.format = PixelFormat::UInt8;
+        options.srgb = true;
+        return writeImage(file, assets.albedo, options);
+    case MapKind::Ao:
+        options.format = PixelFormat::UInt8;
+        return writeImage(file, assets.ao, options);
+    case MapKind::Roughness:
+        options.format = PixelFormat::UInt8;
+        return writeImage(file, assets.roughness, options);
+    case MapKind::Metallic:
+        options.format = PixelFormat::UInt8;
+        return writeImage(file, assets.metallic, options);
+    }
+    return success();
+}
+
+// Same pixels: shared memory, or equal texel for texel.
+template <typename T> bool sameData(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.data() == b.data() || a == b;
+}
+
+bool sameMap(const MaterialAssets& a, const MaterialAssets& b, MapKind kind) {
+    switch (kind) {
+    case MapKind::Height:
+        return a.height.width == b.height.width && sameData(a.height.texels, b.height.texels);
+    case MapKind::Albedo:
+        return a.albedo.width == b.albedo.width && sameData(a.albedo.pixels, b.albedo.pixels);
+    case MapKind::Normal:
+        return a.normal.width == b.normal.width && sameData(a.normal.pixels, b.normal.pixels);
+    case MapKind::Cone:
+        return a.cone.width == b.cone.width && sameData(a.cone.sqrtRatio, b.cone.sqrtRatio);
+    case MapKind::RelaxedCone:
+        return a.relaxedCone.width == b.relaxedCone.width &&
+               sameData(a.relaxedCone.sqrtRatio, b.relaxedCone.sqrtRatio);
+    case MapKind::Ao:
+        return a.ao.width == b.ao.width && sameData(a.ao.pixels, b.ao.pixels);
+    case MapKind::Roughness:
+        return a.roughness.width == b.roughness.width &&
+               sameData(a.roughness.pixels, b.roughness.pixels);
+    case MapKind::Metallic:
+        return a.metallic.width == b.metallic.width &&
+               sameData(a.metallic.pixels, b.metallic.pixels);
+    }
+    return false;
+}
+
+} // namespace
+
+void adoptSavedMaps(DocumentState& state, const DocumentState& saved) {
+    for (MapKind kind : kAllMapKinds) {
+        if (!state.isUnsaved(kind) || saved.isUnsaved(kind) || !saved.hasMap(kind) ||
+            mapPath(saved.material.maps, kind).empty() ||
+            !sameMap(*state.assets, *saved.assets, kind))
+            continue;
+        mapPath(state.material.maps, kind) = mapPath(saved.material.maps, kind);
+        state.setUnsaved(kind, false);
+        if (kind == MapKind::Height) {
+            state.material.heightIsDepth = saved.material.heightIsDepth;
+            state.material.heightChannel = saved.material.heightChannel;
+        }
+    }
+}
+
+std::string mapFileFor(const std::string& materialPath, MapKind kind) {
+    const fs::path material(materialPath);
+    std::string key(mapKey(kind));
+    for (char& c : key)
+        c = c == '-' ? '_' : c;
+    return (material.parent_path() / (material.stem().string() + "_" + key + ".png")).string();
+}
+
+Result<DocumentState> saveDocumentState(const DocumentState& state, const std::string& path) {
+    DocumentState saved = state;
+    for (MapKind kind : kAllMapKinds) {
+        if (!state.isUnsaved(kind) || !state.hasMap(kind))
+            continue;
+        const std::string file = mapFileFor(path, kind);
+        if (Status written = writeMap(*state.assets, kind, file); !written)
+            return written.error();
+        mapPath(saved.material.maps, kind) = fs::absolute(file).lexically_normal().string();
+        saved.setUnsaved(kind, false);
+        if (kind == MapKind::Height) {
+            // The file holds heights as they are in memory: white = high, in red.
+            saved.material.heightIsDepth = false;
+            saved.material.heightChannel = HeightChannel::Red;
+        }
+    }
+    Material onDisk = saved.material;
+    onDisk.maps = relativeMapPaths(saved.material.maps, path);
+    if (Status written = saveMaterial(onDisk, path); !written)
+        return written.error();
+    return saved;
+}
+
+} // namespace px::studio

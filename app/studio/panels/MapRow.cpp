@@ -1,0 +1,168 @@
+#include "panels/MapRow.h"
+
+#include "model/DocumentState.h"
+#include "widgets/ImageConvert.h"
+
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMimeData>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <QWindow>
+
+namespace px::studio {
+
+namespace {
+constexpr int kThumbnail = 40; // logical pixels; drawn at the screen's pixel ratio
+}
+
+MapRow::MapRow(MapKind kind, bool bakeable, QWidget* parent) : QWidget(parent), m_kind(kind) {
+    setAcceptDrops(true);
+    setObjectName(QStringLiteral("map-%1").arg(QString::fromUtf8(mapKey(kind).data())));
+    m_thumbnail = new QLabel(this);
+    m_thumbnail->setFixedSize(kThumbnail, kThumbnail);
+    m_thumbnail->setFrameShape(QFrame::StyledPanel);
+    m_title = new QLabel(QStringLiteral("<b>%1</b>").arg(mapTitle(kind).data()), this);
+    m_source = new QLabel(this);
+    m_source->setTextFormat(Qt::PlainText);
+    m_source->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_source->setWordWrap(true); // "made here, not saved yet" wraps rather than being cut
+    m_warning = new QLabel(this);
+    m_warning->setTextFormat(Qt::PlainText);
+    m_warning->setWordWrap(true);
+    m_warning->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_warning->setStyleSheet(QStringLiteral("QLabel { color: #b35c00; }"));
+    m_warning->hide();
+    m_load = new QToolButton(this);
+    m_load->setText(tr("Load…"));
+    m_load->setToolTip(tr("Load the %1 map from a file (or drop a file on this row).")
+                           .arg(QString::fromUtf8(mapTitle(kind).data()).toLower()));
+    m_clear = new QToolButton(this);
+    m_clear->setText(tr("Clear"));
+    m_clear->setToolTip(tr("Remove this map from the material."));
+
+    auto* text = new QVBoxLayout;
+    text->setSpacing(0);
+    text->addWidget(m_title);
+    text->addWidget(m_source);
+    text->addWidget(m_warning);
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addWidget(m_thumbnail);
+    layout->addLayout(text, 1);
+    if (bakeable) {
+        m_bake = new QToolButton(this);
+        m_bake->setText(tr("Bake"));
+        m_bake->setToolTip(
+            kind == MapKind::Normal
+                ? tr("Bake a normal map from the height map at the material's height scale.")
+            : kind == MapKind::Cone
+                ? tr("Bake a conservative cone map (no point of the bilinear surface inside any "
+                     "cone) for cone step mapping.")
+                : tr("Bake a relaxed cone map for relaxed cone stepping."));
+        layout->addWidget(m_bake);
+        connect(m_bake, &QToolButton::clicked, this, [this] { emit bakeRequested(m_kind); });
+    }
+    layout->addWidget(m_load);
+    layout->addWidget(m_clear);
+    connect(m_load, &QToolButton::clicked, this, [this] { emit loadRequested(m_kind); });
+    connect(m_clear, &QToolButton::clicked, this, [this] { emit clearRequested(m_kind); });
+}
+
+QString MapRow::sourceText() const {
+    return m_source->text();
+}
+
+void MapRow::setWarning(const QString& text) {
+    m_warning->setText(text);
+    m_warning->setToolTip(text);
+    m_warning->setVisible(!text.isEmpty());
+}
+
+QString MapRow::warningText() const {
+    return m_warning->text();
+}
+
+void MapRow::setBakeEnabled(bool enabled) {
+    if (m_bake)
+        m_bake->setEnabled(enabled);
+}
+
+void MapRow::refresh(const DocumentState& state) {
+    const bool present = state.hasMap(m_kind);
+    const std::string& path = mapPath(state.material.maps, m_kind);
+    QString source;
+    if (!present)
+        source = tr("none");
+    else if (state.isUnsaved(m_kind))
+        source = tr("made here, not saved yet");
+    else
+        source = QFileInfo(QString::fromStdString(path)).fileName();
+    if (present && m_kind == MapKind::Height) {
+        const HeightField& h = state.assets->height;
+        source += QStringLiteral(" · %1×%2").arg(h.width).arg(h.height);
+    }
+    m_source->setText(source);
+    m_source->setToolTip(path.empty() ? source : QString::fromStdString(path));
+    m_clear->setEnabled(present && m_kind != MapKind::Height);
+
+    const double ratio = window() && window()->windowHandle()
+                             ? window()->windowHandle()->devicePixelRatio()
+                             : devicePixelRatioF();
+    const int side = static_cast<int>(kThumbnail * ratio);
+    const MaterialAssets& a = *state.assets;
+    QImage image;
+    switch (m_kind) {
+    case MapKind::Albedo:
+        image = toQImage(a.albedo, side);
+        break;
+    case MapKind::Height:
+        image = toQImage(a.height, side);
+        break;
+    case MapKind::Normal:
+        image = toQImage(a.normal, side);
+        break;
+    case MapKind::Cone:
+        image = toQImage(a.cone, side);
+        break;
+    case MapKind::RelaxedCone:
+        image = toQImage(a.relaxedCone, side);
+        break;
+    case MapKind::Ao:
+        image = toQImage(a.ao, side);
+        break;
+    case MapKind::Roughness:
+        image = toQImage(a.roughness, side);
+        break;
+    case MapKind::Metallic:
+        image = toQImage(a.metallic, side);
+        break;
+    }
+    if (image.isNull()) {
+        m_thumbnail->clear();
+        return;
+    }
+    QPixmap pixmap =
+        QPixmap::fromImage(image.scaled(side, side, Qt::KeepAspectRatio, Qt::SmoothTransformation));
+    pixmap.setDevicePixelRatio(ratio);
+    m_thumbnail->setPixmap(pixmap);
+}
+
+void MapRow::dragEnterEvent(QDragEnterEvent* event) {
+    const QMimeData* mime = event->mimeData();
+    if (mime->hasUrls() && mime->urls().size() == 1 && mime->urls().front().isLocalFile())
+        event->acceptProposedAction();
+}
+
+void MapRow::dropEvent(QDropEvent* event) {
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.size() == 1 && urls.front().isLocalFile()) {
+        event->acceptProposedAction();
+        emit fileDropped(m_kind, urls.front().toLocalFile());
+    }
+}
+
+} // namespace px::studio

@@ -1,0 +1,151 @@
+#include "panels/MapsPanel.h"
+
+#include "jobs/Baking.h"
+#include "model/MaterialDocument.h"
+#include "panels/MapRow.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace px::studio {
+
+MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* parent)
+    : QWidget(parent), m_document(document), m_baker(baker) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    for (MapKind kind : kAllMapKinds) {
+        const bool bakeable =
+            kind == MapKind::Normal || kind == MapKind::Cone || kind == MapKind::RelaxedCone;
+        auto* row = new MapRow(kind, bakeable, this);
+        m_rows[kind] = row;
+        layout->addWidget(row);
+        connect(row, &MapRow::loadRequested, this, &MapsPanel::loadRequested);
+        connect(row, &MapRow::fileDropped, this, &MapsPanel::fileDropped);
+        connect(row, &MapRow::clearRequested, this, &MapsPanel::clearMap);
+        connect(row, &MapRow::bakeRequested, this, [this](MapKind k) {
+            emit bakeRequested(k == MapKind::Normal ? BakeKind::Normal
+                               : k == MapKind::Cone ? BakeKind::Cone
+                                                    : BakeKind::RelaxedCone);
+        });
+    }
+
+    auto* bake = new QGroupBox(tr("Baking"), this);
+    auto* bakeLayout = new QVBoxLayout(bake);
+    m_filter = new QComboBox(this);
+    for (std::string_view name : normalFilterNames())
+        m_filter->addItem(QString::fromUtf8(name.data(), static_cast<int>(name.size())));
+    m_filter->setCurrentText(QStringLiteral("sobel"));
+    m_filter->setToolTip(tr("Derivative filter of the normal bake: central (4 taps, sharpest), "
+                            "Sobel or Scharr (3x3, smoother). Each gives the same strength."));
+    connect(m_filter, &QComboBox::currentIndexChanged, this, &MapsPanel::refresh);
+    auto* form = new QFormLayout;
+    form->addRow(tr("Normal filter"), m_filter);
+    m_bakeLabel = new QLabel(tr("No bake running."), this);
+    m_progress = new QProgressBar(this);
+    m_progress->setRange(0, 100);
+    m_progress->setValue(0);
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setEnabled(false);
+    m_cancel->setToolTip(tr("Stop the bake (Esc). Nothing changes in the material."));
+    auto* progressRow = new QHBoxLayout;
+    progressRow->addWidget(m_progress, 1);
+    progressRow->addWidget(m_cancel);
+    bakeLayout->addLayout(form);
+    bakeLayout->addWidget(m_bakeLabel);
+    bakeLayout->addLayout(progressRow);
+    layout->addWidget(bake);
+    layout->addStretch();
+
+    connect(m_cancel, &QPushButton::clicked, m_baker, &BakeRunner::cancel);
+    connect(m_baker, &BakeRunner::started, this, [this](BakeKind kind) {
+        m_bakeLabel->setText(tr("Baking the %1…").arg(bakeTitle(kind)));
+        m_progress->setValue(0);
+        m_cancel->setEnabled(true);
+        refresh();
+    });
+    connect(m_baker, &BakeRunner::progress, this,
+            [this](BakeKind, double f) { m_progress->setValue(static_cast<int>(f * 100)); });
+    connect(m_baker, &BakeRunner::finished, this, [this](const BakeOutcome& outcome) {
+        m_bakeLabel->setText(
+            outcome.cancelled
+                ? tr("The %1 bake was cancelled.").arg(bakeTitle(outcome.request.kind))
+            : !outcome.error.isEmpty() ? outcome.error
+                                       : tr("Baked the %1 in %2 s.")
+                                             .arg(bakeTitle(outcome.request.kind))
+                                             .arg(outcome.seconds, 0, 'f', 2));
+        m_progress->setValue(outcome.cancelled || !outcome.error.isEmpty() ? 0 : 100);
+    });
+    connect(m_baker, &BakeRunner::idle, this, [this] {
+        m_cancel->setEnabled(false);
+        refresh();
+    });
+    connect(document, &MaterialDocument::changed, this, &MapsPanel::refresh);
+    refresh();
+}
+
+NormalFilter MapsPanel::normalFilter() const {
+    return parseNormalFilter(m_filter->currentText().toStdString()).value_or(NormalFilter::Sobel);
+}
+
+void MapsPanel::clearMap(MapKind kind) {
+    m_document->edit(tr("Clear %1 map").arg(QString::fromUtf8(mapTitle(kind).data()).toLower()),
+                     [kind](DocumentState& s) {
+                         auto assets = std::make_shared<MaterialAssets>(*s.assets);
+                         switch (kind) {
+                         case MapKind::Albedo:
+                             assets->albedo = {};
+                             break;
+                         case MapKind::Normal:
+                             assets->normal = {};
+                             break;
+                         case MapKind::Cone:
+                             assets->cone = {};
+                             break;
+                         case MapKind::RelaxedCone:
+                             assets->relaxedCone = {};
+                             break;
+                         case MapKind::Ao:
+                             assets->ao = {};
+                             break;
+                         case MapKind::Roughness:
+                             assets->roughness = {};
+                             break;
+                         case MapKind::Metallic:
+                             assets->metallic = {};
+                             break;
+                         case MapKind::Height:
+                             return; // every technique reads it
+                         }
+                         s.assets = assets;
+                         mapPath(s.material.maps, kind).clear();
+                         s.setUnsaved(kind, false);
+                         if (kind == MapKind::Normal) {
+                             s.normalBake.reset();
+                             if (s.material.normalSource == NormalSource::Map)
+                                 s.material.normalSource = NormalSource::HeightCentral;
+                         }
+                         // A technique left without its cone map falls back to the march.
+                         for (int v = 0; v < kMaxViewports; ++v) {
+                             if (!s.canTrace(s.view(v).technique))
+                                 s.setView(v, {Technique::Pom, info(Technique::Pom).defaults});
+                         }
+                     });
+}
+
+void MapsPanel::refresh() {
+    const DocumentState& s = m_document->state();
+    const bool height = s.hasMap(MapKind::Height);
+    for (auto& [kind, row] : m_rows) {
+        row->refresh(s);
+        row->setBakeEnabled(height && !m_baker->isBusy());
+    }
+    m_rows.at(MapKind::Normal)->setWarning(staleNormalBake(s, normalFilter()));
+}
+
+} // namespace px::studio

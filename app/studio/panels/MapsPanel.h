@@ -1,0 +1,49 @@
+#pragma once
+// The material's maps: one row each (load, clear, bake), and the running bake's progress bar
+// with its Cancel button.
+
+#include "jobs/BakeRunner.h"
+#include "parallax/material/MapKind.h"
+
+#include <QWidget>
+#include <map>
+
+class QComboBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace px::studio {
+
+class MapRow;
+class MaterialDocument;
+
+class MapsPanel : public QWidget {
+    Q_OBJECT
+public:
+    MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* parent = nullptr);
+
+    MapRow* row(MapKind kind) const { return m_rows.at(kind); }
+    QProgressBar* progressBar() const { return m_progress; }
+    QPushButton* cancelButton() const { return m_cancel; }
+    NormalFilter normalFilter() const;
+
+signals:
+    void loadRequested(px::MapKind kind);
+    void fileDropped(px::MapKind kind, const QString& path);
+    void bakeRequested(px::studio::BakeKind kind);
+
+private:
+    void refresh();
+    void clearMap(MapKind kind);
+
+    MaterialDocument* m_document;
+    BakeRunner* m_baker;
+    std::map<MapKind, MapRow*> m_rows;
+    QComboBox* m_filter;
+    QLabel* m_bakeLabel;
+    QProgressBar* m_progress;
+    QPushButton* m_cancel;
+};
+
+} // namespace px::studio

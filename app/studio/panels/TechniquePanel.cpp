@@ -1,0 +1,199 @@
+#include "panels/TechniquePanel.h"
+
+#include "model/MaterialDocument.h"
+#include "widgets/Hints.h"
+#include "widgets/RangeSlider.h"
+#include "widgets/SliderField.h"
+#include "widgets/TechniqueCombo.h"
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+namespace px::studio {
+
+int layersForQuality(double quality) {
+    return std::clamp(static_cast<int>(std::lround(quality * 50.0)), 1, kMaxLayersLimit);
+}
+
+double qualityForLayers(int layers) {
+    return layers / 50.0;
+}
+
+TechniquePanel::TechniquePanel(MaterialDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    m_box = new QGroupBox(this);
+    outer->addWidget(m_box);
+    auto* layout = new QVBoxLayout(m_box);
+
+    m_technique = new TechniqueCombo(this);
+    auto* form = new QFormLayout;
+    form->addRow(tr("Technique"), m_technique);
+    layout->addLayout(form);
+
+    m_minLayers = new SliderField(tr("Min layers"), {1, 64, 1, kMaxLayersLimit, 0, 1}, this);
+    m_maxLayers = new SliderField(tr("Max layers"), {1, 128, 1, kMaxLayersLimit, 0, 1}, this);
+    m_minLayers->setHint(hints::minLayers());
+    m_maxLayers->setHint(hints::maxLayers());
+
+    m_qualityRow = new QWidget(this);
+    auto* qualityLayout = new QHBoxLayout(m_qualityRow);
+    qualityLayout->setContentsMargins(0, 0, 0, 0);
+    auto* qualityLabel = new QLabel(tr("Quality range"), m_qualityRow);
+    m_quality = new RangeSlider(m_qualityRow);
+    m_qualityLow = new QDoubleSpinBox(m_qualityRow);
+    m_qualityHigh = new QDoubleSpinBox(m_qualityRow);
+    for (QDoubleSpinBox* box : {m_qualityLow, m_qualityHigh}) {
+        box->setRange(0.02, kMaxLayersLimit / 50.0);
+        box->setDecimals(2);
+        box->setSingleStep(0.02);
+        box->setKeyboardTracking(false);
+    }
+    qualityLayout->addWidget(qualityLabel, 3);
+    qualityLayout->addWidget(m_qualityLow, 2);
+    qualityLayout->addWidget(m_quality, 3);
+    qualityLayout->addWidget(m_qualityHigh, 2);
+    for (QWidget* w : {static_cast<QWidget*>(qualityLabel), static_cast<QWidget*>(m_quality),
+                       static_cast<QWidget*>(m_qualityLow), static_cast<QWidget*>(m_qualityHigh)}) {
+        w->setToolTip(hints::qualityRange());
+        w->setStatusTip(hints::qualityRange());
+    }
+
+    m_binary = new SliderField(tr("Binary steps"), {0, 16, 0, kMaxRefineLimit, 0, 1}, this);
+    m_secant = new SliderField(tr("Secant steps"), {0, 16, 0, kMaxRefineLimit, 0, 1}, this);
+    m_cap = new SliderField(tr("Step cap"), {1, 256, 1, kMaxStepsLimit, 0, 1}, this);
+    m_binary->setHint(hints::binarySteps());
+    m_secant->setHint(hints::secantSteps());
+
+    m_defaults = new QPushButton(tr("Defaults"), this);
+    m_defaults->setToolTip(tr("The technique's default quality."));
+    m_useForMaterial = new QPushButton(tr("Use for material"), this);
+    m_useForMaterial->setToolTip(
+        tr("Make this viewport's technique and quality the material's (viewport 1, saved)."));
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_defaults);
+    buttons->addWidget(m_useForMaterial);
+    buttons->addStretch();
+
+    for (QWidget* w : {static_cast<QWidget*>(m_minLayers), static_cast<QWidget*>(m_maxLayers),
+                       m_qualityRow, static_cast<QWidget*>(m_binary),
+                       static_cast<QWidget*>(m_secant), static_cast<QWidget*>(m_cap)})
+        layout->addWidget(w);
+    layout->addLayout(buttons);
+
+    connect(m_technique, &TechniqueCombo::techniqueChosen, this, [this](Technique t) {
+        editQuality(tr("Technique %1").arg(QString::fromUtf8(info(t).name.data())), {},
+                    [t](ViewQuality& q) {
+                        if (q.technique != t)
+                            q = {t, info(t).defaults};
+                    });
+    });
+    auto bindInt = [this](SliderField* field, const QString& text, const QString& key,
+                          int TraceParams::*member) {
+        connect(field, &SliderField::valueEdited, this, [=, this](double v) {
+            editQuality(text, key, [=](ViewQuality& q) {
+                q.params.*member = static_cast<int>(std::lround(v));
+                // Keep min <= max the way the user means it: the other end follows.
+                if (member == &TraceParams::minLayers)
+                    q.params.maxLayers = std::max(q.params.maxLayers, q.params.minLayers);
+                if (member == &TraceParams::maxLayers)
+                    q.params.minLayers = std::min(q.params.minLayers, q.params.maxLayers);
+            });
+        });
+        connect(field, &SliderField::editFinished, m_document, &MaterialDocument::endMerge);
+    };
+    bindInt(m_minLayers, tr("Min layers"), QStringLiteral("minLayers"), &TraceParams::minLayers);
+    bindInt(m_maxLayers, tr("Max layers"), QStringLiteral("maxLayers"), &TraceParams::maxLayers);
+    bindInt(m_binary, tr("Binary steps"), QStringLiteral("binarySteps"), &TraceParams::binarySteps);
+    bindInt(m_secant, tr("Secant steps"), QStringLiteral("secantSteps"), &TraceParams::secantSteps);
+    bindInt(m_cap, tr("Step cap"), QStringLiteral("maxSteps"), &TraceParams::maxSteps);
+
+    connect(m_quality, &RangeSlider::rangeEdited, this, &TechniquePanel::setQualityRange);
+    connect(m_quality, &RangeSlider::editFinished, m_document, &MaterialDocument::endMerge);
+    connect(m_qualityLow, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        setQualityRange(v, std::max(v, m_qualityHigh->value()));
+        m_document->endMerge();
+    });
+    connect(m_qualityHigh, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        setQualityRange(std::min(v, m_qualityLow->value()), v);
+        m_document->endMerge();
+    });
+    connect(m_defaults, &QPushButton::clicked, this, [this] {
+        editQuality(tr("Default quality"), {},
+                    [](ViewQuality& q) { q.params = info(q.technique).defaults; });
+    });
+    connect(m_useForMaterial, &QPushButton::clicked, this, [this] {
+        const ViewQuality q = m_document->state().view(m_viewport);
+        m_document->edit(tr("Use viewport %1 for the material").arg(m_viewport + 1),
+                         [q](DocumentState& s) { s.setView(0, q); });
+    });
+
+    connect(document, &MaterialDocument::changed, this, &TechniquePanel::refresh);
+    refresh();
+}
+
+void TechniquePanel::setViewport(int index) {
+    m_viewport = std::clamp(index, 0, kMaxViewports - 1);
+    refresh();
+}
+
+void TechniquePanel::editQuality(const QString& text, const QString& key,
+                                 const std::function<void(ViewQuality&)>& change) {
+    const int viewport = m_viewport;
+    m_document->edit(
+        text,
+        [&](DocumentState& s) {
+            ViewQuality q = s.view(viewport);
+            change(q);
+            s.setView(viewport, q);
+        },
+        key.isEmpty() ? key : key + QString::number(viewport));
+}
+
+void TechniquePanel::setQualityRange(double low, double high) {
+    editQuality(tr("Quality range"), QStringLiteral("quality"), [=](ViewQuality& q) {
+        q.params.minLayers = layersForQuality(low);
+        q.params.maxLayers = std::max(q.params.minLayers, layersForQuality(high));
+    });
+}
+
+void TechniquePanel::refresh() {
+    const DocumentState& s = m_document->state();
+    const ViewQuality q = s.view(m_viewport);
+    const TechniqueInfo& t = info(q.technique);
+    m_box->setTitle(m_viewport == 0 ? tr("Viewport 1: the material's technique")
+                                    : tr("Viewport %1 technique").arg(m_viewport + 1));
+    m_technique->updateAvailability(s);
+    m_technique->setTechnique(q.technique);
+    m_minLayers->setValue(q.params.minLayers);
+    m_maxLayers->setValue(q.params.maxLayers);
+    m_binary->setValue(q.params.binarySteps);
+    m_secant->setValue(q.params.secantSteps);
+    m_cap->setValue(q.params.maxSteps);
+    m_cap->setHint(hints::stepCap(q.technique));
+    {
+        const QSignalBlocker a(m_qualityLow), b(m_qualityHigh);
+        m_qualityLow->setValue(qualityForLayers(q.params.minLayers));
+        m_qualityHigh->setValue(qualityForLayers(q.params.maxLayers));
+        m_quality->setRange(qualityForLayers(q.params.minLayers),
+                            qualityForLayers(q.params.maxLayers));
+    }
+    m_minLayers->setVisible(t.usesLayers);
+    m_maxLayers->setVisible(t.usesLayers);
+    m_qualityRow->setVisible(t.usesLayers);
+    m_binary->setVisible(t.usesBinarySteps);
+    m_secant->setVisible(t.usesSecantSteps);
+    m_cap->setVisible(t.usesMaxSteps);
+    m_useForMaterial->setVisible(m_viewport != 0);
+}
+
+} // namespace px::studio

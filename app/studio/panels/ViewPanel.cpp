@@ -1,0 +1,97 @@
+#include "panels/ViewPanel.h"
+
+#include "preview/ViewInteraction.h"
+#include "preview/ViewportGrid.h"
+#include "widgets/Hints.h"
+#include "widgets/SliderField.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+namespace px::studio {
+
+ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_grid(grid) {
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    auto* box = new QGroupBox(tr("Light and view"), this);
+    outer->addWidget(box);
+    auto* layout = new QVBoxLayout(box);
+
+    m_azimuth = new SliderField(tr("Light azimuth"), {-180, 180, -180, 180, 0, 5}, this);
+    m_elevation = new SliderField(tr("Light elevation"), {1, 90, 1, 90, 0, 5}, this);
+    m_azimuth->setSuffix(QStringLiteral("°"));
+    m_elevation->setSuffix(QStringLiteral("°"));
+    m_azimuth->setHint(hints::lightAzimuth());
+    m_elevation->setHint(hints::lightElevation());
+    m_viewAngle = new SliderField(tr("View angle"),
+                                  {90.0 - kMaxElevation, 90.0 - kMinElevation, 90.0 - kMaxElevation,
+                                   90.0 - kMinElevation, 1, 1.0},
+                                  this);
+    m_viewAngle->setSuffix(QStringLiteral("°"));
+    m_viewAngle->setHint(tr("The camera's angle from the surface normal (0° looks straight down, "
+                            "89° grazes the surface): type an angle to compare views at it."));
+    m_mesh = new QComboBox(this);
+    for (std::string_view name : meshKindNames())
+        m_mesh->addItem(QString::fromUtf8(name.data(), static_cast<int>(name.size())),
+                        static_cast<int>(parseMeshKind(name).value_or(MeshKind::Plane)));
+    m_mesh->setToolTip(hints::mesh());
+    m_mesh->setStatusTip(hints::mesh());
+    m_link = new QCheckBox(tr("Link viewports (camera and light)"), this);
+    m_link->setToolTip(hints::linkViews());
+    m_link->setStatusTip(hints::linkViews());
+    auto* reset = new QPushButton(tr("Reset Camera"), this);
+    reset->setToolTip(tr("Back to the default orbit (Home)."));
+
+    auto* form = new QFormLayout;
+    form->addRow(tr("Mesh"), m_mesh);
+    layout->addWidget(m_azimuth);
+    layout->addWidget(m_elevation);
+    layout->addWidget(m_viewAngle);
+    layout->addLayout(form);
+    layout->addWidget(m_link);
+    layout->addWidget(reset);
+
+    connect(m_azimuth, &SliderField::valueEdited, this, [this](double v) {
+        SharedView view = m_grid->activeView();
+        view.light.azimuthDeg = static_cast<float>(v);
+        m_grid->editView(view);
+    });
+    connect(m_elevation, &SliderField::valueEdited, this, [this](double v) {
+        SharedView view = m_grid->activeView();
+        view.light.elevationDeg = static_cast<float>(v);
+        m_grid->editView(view);
+    });
+    connect(m_viewAngle, &SliderField::valueEdited, this, [this](double v) {
+        SharedView view = m_grid->activeView();
+        view.camera = withPolarAngle(view.camera, v);
+        m_grid->editView(view);
+    });
+    connect(m_mesh, &QComboBox::currentIndexChanged, this, [this](int i) {
+        SharedView view = m_grid->activeView();
+        view.mesh = static_cast<MeshKind>(m_mesh->itemData(i).toInt());
+        m_grid->editView(view);
+    });
+    connect(m_link, &QCheckBox::toggled, m_grid, &ViewportGrid::setLinked);
+    connect(reset, &QPushButton::clicked, m_grid, &ViewportGrid::resetCameras);
+    connect(m_grid, &ViewportGrid::viewEdited, this, &ViewPanel::refresh);
+    connect(m_grid, &ViewportGrid::activeViewportChanged, this, &ViewPanel::refresh);
+    connect(m_grid, &ViewportGrid::linkedChanged, this, &ViewPanel::refresh);
+    refresh();
+}
+
+void ViewPanel::refresh() {
+    const SharedView& view = m_grid->activeView();
+    m_azimuth->setValue(view.light.azimuthDeg);
+    m_elevation->setValue(view.light.elevationDeg);
+    m_viewAngle->setValue(90.0 - view.camera.elevationDeg);
+    const QSignalBlocker a(m_mesh), b(m_link);
+    m_mesh->setCurrentIndex(m_mesh->findData(static_cast<int>(view.mesh)));
+    m_link->setChecked(m_grid->linked());
+}
+
+} // namespace px::studio

@@ -1,0 +1,229 @@
+#include "preview/PreviewRenderer.h"
+
+#include "parallax/render/Renderer.h" // parallax-render
+#include "preview/ErrorStats.h"
+
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
+#include <QOpenGLFunctions>
+#include <QRect>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace px::studio {
+
+namespace {
+
+// Without the heat map the figures come from a stratified sample of the view: a box in each
+// cell of a 6 x 4 grid, about this many pixels in all. Enough for a p99 (the worst 1 % is still
+// hundreds of pixels), few enough for llvmpipe to trace `exact` in a moment.
+constexpr int kSamplePixels = 40000;
+
+std::vector<QRect> sampleBoxes(int width, int height) {
+    constexpr int columns = 6, rows = 4;
+    const int cellW = std::max(1, width / columns), cellH = std::max(1, height / rows);
+    const double fraction =
+        std::min(1.0, std::sqrt(double(kSamplePixels) / (double(width) * height)));
+    const int boxW = std::max(1, int(cellW * fraction)), boxH = std::max(1, int(cellH * fraction));
+    std::vector<QRect> boxes;
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < columns; ++i)
+            boxes.emplace_back(i * cellW + (cellW - boxW) / 2, j * cellH + (cellH - boxH) / 2, boxW,
+                               boxH);
+    return boxes;
+}
+
+// A dark neutral backdrop, sRGB-encoded as the colour output is.
+constexpr glm::vec4 kBackground{0.16f, 0.17f, 0.19f, 1.0f};
+
+QOpenGLFunctions* gl() {
+    return QOpenGLContext::currentContext()->functions();
+}
+
+} // namespace
+
+struct PreviewRenderer::Impl {
+    std::unique_ptr<Renderer> renderer;
+    std::unique_ptr<GpuMaterial> gpu;
+    std::shared_ptr<const MaterialAssets> uploaded; // what `gpu` holds
+    WrapMode uploadedWrap = WrapMode::Repeat;
+    std::optional<VariantKey> lastKey;         // the variant of the last frame (uniformValue)
+    std::optional<RenderTarget> surfaceTarget; // float (u, v, t, fetches), the view's size
+
+    // Uploads the scene's maps when they are not the ones on the GPU.
+    Status sync(const PreviewScene& scene) {
+        if (gpu && uploaded == scene.assets && uploadedWrap == scene.material.wrap)
+            return success();
+        Result<std::unique_ptr<GpuMaterial>> created =
+            GpuMaterial::create(*scene.assets, scene.material.wrap);
+        if (!created)
+            return created.error();
+        gpu = std::move(*created);
+        uploaded = scene.assets;
+        uploadedWrap = scene.material.wrap;
+        return success();
+    }
+
+    // The surface output (u, v, t, fetches) of `material` inside `boxes` of the view; the rest
+    // of the image holds t = -1 (no surface), so it is left out of every figure.
+    Result<Image> surfaces(const PreviewScene& scene, const Material& material, DrawOptions options,
+                           const std::vector<QRect>& boxes) {
+        QOpenGLFunctions* f = gl();
+        surfaceTarget->bind();
+        f->glDisable(GL_SCISSOR_TEST);
+        f->glClearColor(-1.0f, -1.0f, -1.0f, -1.0f);
+        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        options.clear = true; // inside the box
+        f->glEnable(GL_SCISSOR_TEST);
+        Status status = success();
+        for (const QRect& box : boxes) {
+            // GL counts rows from the bottom.
+            f->glScissor(box.x(), surfaceTarget->size().y - box.y() - box.height(), box.width(),
+                         box.height());
+            status = renderer->draw(*gpu, material, scene.view.camera, scene.view.light, options,
+                                    surfaceTarget->size());
+            if (!status)
+                break;
+        }
+        f->glDisable(GL_SCISSOR_TEST);
+        if (!status)
+            return status.error();
+        Image image = surfaceTarget->read();
+        f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        return image;
+    }
+
+    DrawOptions options(const PreviewScene& scene) const {
+        DrawOptions o;
+        o.mesh = scene.view.mesh;
+        o.background = kBackground;
+        return o;
+    }
+};
+
+PreviewRenderer::~PreviewRenderer() = default;
+
+Result<std::unique_ptr<PreviewRenderer>> PreviewRenderer::create() {
+    Result<std::unique_ptr<Renderer>> renderer = Renderer::create();
+    if (!renderer)
+        return renderer.error();
+    std::unique_ptr<PreviewRenderer> preview(new PreviewRenderer);
+    preview->m_impl = std::make_unique<Impl>();
+    preview->m_impl->renderer = std::move(*renderer);
+    return preview;
+}
+
+Result<double> PreviewRenderer::draw(const PreviewScene& scene, QSize pixels, unsigned fbo) {
+    Impl& d = *m_impl;
+    const auto start = std::chrono::steady_clock::now();
+    QOpenGLFunctions* f = gl();
+    f->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    const glm::ivec2 size(pixels.width(), pixels.height());
+    if (!scene.traceable || !scene.assets) {
+        f->glViewport(0, 0, size.x, size.y);
+        f->glClearColor(kBackground.r, kBackground.g, kBackground.b, 1.0f);
+        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        return 0.0;
+    }
+    if (Status s = d.sync(scene); !s)
+        return s.error();
+    const DrawOptions options = d.options(scene);
+    if (Status s = d.renderer->draw(*d.gpu, scene.material, scene.view.camera, scene.view.light,
+                                    options, size);
+        !s)
+        return s.error();
+    d.lastKey = d.renderer->variantFor(*d.gpu, scene.material, options);
+    if (scene.overlays.wipe) {
+        // B on the right of the divider: the same view again, scissored.
+        Material b = scene.material;
+        b.technique = scene.overlays.wipeTechnique;
+        b.params = info(b.technique).defaults;
+        const int x = static_cast<int>(scene.overlays.wipePosition * size.x);
+        f->glEnable(GL_SCISSOR_TEST);
+        f->glScissor(x, 0, size.x - x, size.y);
+        const Status s =
+            d.renderer->draw(*d.gpu, b, scene.view.camera, scene.view.light, options, size);
+        f->glDisable(GL_SCISSOR_TEST);
+        if (!s)
+            return s.error();
+    }
+    // QPainter draws the overlays next, on the depth the mesh left: hand it a neutral state.
+    f->glDisable(GL_DEPTH_TEST);
+    f->glDisable(GL_CULL_FACE);
+    f->glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+Result<PreviewStats> PreviewRenderer::measure(const PreviewScene& scene, QSize pixels,
+                                              double frameMs) {
+    Impl& d = *m_impl;
+    PreviewStats stats;
+    stats.frameMs = frameMs;
+    if (!scene.traceable || !scene.assets || scene.assets->height.empty()) {
+        m_heatMap = {};
+        return stats;
+    }
+    if (Status s = d.sync(scene); !s)
+        return s.error();
+    // The view's own size: marching techniques read the height level each pixel's footprint
+    // asks for, so a smaller render would measure another picture.
+    const glm::ivec2 size(std::max(1, pixels.width()), std::max(1, pixels.height()));
+    if (!d.surfaceTarget || d.surfaceTarget->size() != size) {
+        Result<RenderTarget> target = RenderTarget::create(size, TargetFormat::Rgba32F);
+        if (!target)
+            return target.error();
+        d.surfaceTarget = std::move(*target);
+    }
+    // Every pixel for the heat map; else a stratified sample of boxes, enough for a p99.
+    const std::vector<QRect> boxes = scene.overlays.heatMap
+                                         ? std::vector<QRect>{QRect(0, 0, size.x, size.y)}
+                                         : sampleBoxes(size.x, size.y);
+    DrawOptions options = d.options(scene);
+    options.output = ShaderOutput::Surface;
+    Material exact = scene.material;
+    exact.technique = Technique::Exact;
+    exact.params = info(Technique::Exact).defaults;
+    Result<Image> hits = d.surfaces(scene, scene.material, options, boxes);
+    if (!hits)
+        return hits.error();
+    // The view's hits come from the kernels it draws with (production: hardware filtering); the
+    // reference is the exact walk in the verify flavour, equal to the CPU's.
+    DrawOptions referenceOptions = options;
+    referenceOptions.kernels = KernelFlavour::Verify;
+    Result<Image> reference = d.surfaces(scene, exact, referenceOptions, boxes);
+    if (!reference)
+        return reference.error();
+    const SurfaceErrors errors =
+        compareSurfaces(*hits, *reference, scene.assets->height.width, scene.assets->height.height);
+    stats.fetchesPerPixel = errors.meanFetches;
+    stats.meanError = errors.meanError;
+    stats.p99Error = errors.p99Error;
+    stats.maxError = errors.maxError;
+    stats.otherSurface = errors.otherSurface;
+    stats.pixels = errors.pixels;
+    stats.valid = true;
+    m_heatMap = scene.overlays.heatMap ? heatMapImage(errors) : QImage();
+    return stats;
+}
+
+std::optional<float> PreviewRenderer::uniformValue(const std::string& name) {
+    Impl& d = *m_impl;
+    if (!d.lastKey)
+        return std::nullopt;
+    Result<const ShaderProgram*> program = d.renderer->shaders().program(*d.lastKey);
+    if (!program)
+        return std::nullopt;
+    const int location = (*program)->location(name);
+    if (location < 0)
+        return std::nullopt;
+    auto* f = QOpenGLContext::currentContext()->extraFunctions();
+    // Room for a mat4: GL writes every component of the uniform; the first is returned. It
+    // converts int uniforms too.
+    float values[16] = {};
+    f->glGetUniformfv((*program)->id(), location, values);
+    return values[0];
+}
+
+} // namespace px::studio

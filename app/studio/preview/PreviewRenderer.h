@@ -1,0 +1,40 @@
+#pragma once
+// The bridge between a viewport's PreviewScene and the GL renderer (parallax-render): uploads the
+// maps when they change, draws the scene (and the A/B wipe's second technique), and measures the
+// view's figures against the exact intersection with the renderer's surface output.
+// Every call needs the preview's GL context current.
+
+#include "parallax/Result.h"
+#include "preview/PreviewScene.h"
+
+#include <QImage>
+#include <QSize>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace px::studio {
+
+class PreviewRenderer {
+public:
+    static Result<std::unique_ptr<PreviewRenderer>> create();
+    ~PreviewRenderer();
+
+    // Draws into framebuffer `fbo` of `pixels` device pixels; returns the frame time in ms
+    // (steady clock around the draw and glFinish).
+    Result<double> draw(const PreviewScene& scene, QSize pixels, unsigned fbo);
+    // Fetches per pixel and the error against `exact`, rendered at the view's own resolution (the
+    // marching techniques' height level follows each pixel's footprint): over every pixel when
+    // the heat map is on (and makes it), else over a stratified sample of boxes of the view.
+    Result<PreviewStats> measure(const PreviewScene& scene, QSize pixels, double frameMs);
+    QImage heatMap() const { return m_heatMap; }
+    std::optional<float> uniformValue(const std::string& name);
+
+private:
+    PreviewRenderer() = default;
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+    QImage m_heatMap;
+};
+
+} // namespace px::studio

@@ -1,0 +1,250 @@
+#include "preview/PreviewWidget.h"
+
+#include "preview/PreviewRenderer.h"
+#include "preview/ViewInteraction.h"
+#include "widgets/Hints.h"
+
+#include <QKeyEvent>
+#include <QLinearGradient>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QPainter>
+#include <QTimer>
+#include <QWheelEvent>
+#include <cmath>
+
+namespace px::studio {
+
+namespace {
+// How close (logical pixels) a press must be to the wipe divider to grab it.
+constexpr double kWipeGrab = 8.0;
+} // namespace
+
+PreviewWidget::PreviewWidget(QWidget* parent) : QOpenGLWidget(parent) {
+    setMinimumSize(96, 72);
+    setFocusPolicy(Qt::ClickFocus);
+    setStatusTip(hints::viewportHelp());
+    setToolTip(hints::viewportHelp());
+    m_measureTimer = new QTimer(this);
+    m_measureTimer->setSingleShot(true);
+    m_measureTimer->setInterval(150);
+    connect(m_measureTimer, &QTimer::timeout, this, &PreviewWidget::measure);
+}
+
+PreviewWidget::~PreviewWidget() {
+    releaseGl();
+    // ~QOpenGLWidget destroys the context after this part of the object is gone: its
+    // aboutToBeDestroyed must not call releaseGl on a PreviewWidget that no longer exists.
+    if (QOpenGLContext* gl = context())
+        disconnect(gl, nullptr, this, nullptr);
+}
+
+void PreviewWidget::releaseGl() {
+    if (!m_renderer)
+        return;
+    makeCurrent();
+    m_renderer.reset();
+    doneCurrent();
+}
+
+void PreviewWidget::setScene(const PreviewScene& scene) {
+    m_scene = scene;
+    m_measured = false;
+    m_stats.valid = false;
+    m_measureTimer->start();
+    update();
+}
+
+void PreviewWidget::measure() {
+    if (!m_renderer || !isVisible()) {
+        return;
+    }
+    makeCurrent();
+    Result<PreviewStats> stats =
+        m_renderer->measure(m_scene, size() * devicePixelRatioF(), m_stats.frameMs);
+    doneCurrent();
+    m_measured = true;
+    if (stats)
+        m_stats = *stats;
+    else
+        m_renderError = QString::fromStdString(stats.error().message);
+    update();
+    emit statsChanged();
+}
+
+std::optional<float> PreviewWidget::uniformValue(const QString& name) {
+    if (!m_renderer)
+        return std::nullopt;
+    makeCurrent();
+    std::optional<float> value = m_renderer->uniformValue(name.toStdString());
+    doneCurrent();
+    return value;
+}
+
+void PreviewWidget::initializeGL() {
+    // The context goes away with the widget's top level window (reparenting, closing): the
+    // renderer's GL objects must go first.
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &PreviewWidget::releaseGl,
+            Qt::UniqueConnection);
+    Result<std::unique_ptr<PreviewRenderer>> renderer = PreviewRenderer::create();
+    if (!renderer) {
+        m_renderError = QString::fromStdString(renderer.error().message);
+        return;
+    }
+    m_renderer = std::move(*renderer);
+    m_renderError.clear();
+}
+
+void PreviewWidget::resizeGL(int, int) {}
+
+void PreviewWidget::paintGL() {
+    const QSize pixels = size() * devicePixelRatioF();
+    if (m_renderer) {
+        Result<double> frameMs = m_renderer->draw(m_scene, pixels, defaultFramebufferObject());
+        if (!frameMs) {
+            m_renderError = QString::fromStdString(frameMs.error().message);
+        } else {
+            m_renderError.clear();
+            m_stats.frameMs = *frameMs;
+            ++m_frames;
+        }
+        if (!m_measured && !m_measureTimer->isActive())
+            m_measureTimer->start();
+    }
+
+    QPainter painter(this);
+    if (m_renderer && m_scene.overlays.heatMap && m_stats.valid) {
+        const QImage heat = m_renderer->heatMap();
+        if (!heat.isNull()) {
+            painter.setRenderHint(QPainter::SmoothPixmapTransform, false);
+            painter.drawImage(rect(), heat);
+        }
+    }
+    if (m_renderer && m_scene.overlays.heatMap && m_stats.valid)
+        drawHeatLegend(painter);
+    if (m_scene.overlays.wipe) {
+        const double x = m_scene.overlays.wipePosition * width();
+        painter.setPen(QPen(Qt::white, 2));
+        painter.drawLine(QPointF(x, 0), QPointF(x, height()));
+        painter.setPen(Qt::white);
+        const QString a = QString::fromUtf8(info(m_scene.quality.technique).name.data());
+        const QString b = QString::fromUtf8(info(m_scene.overlays.wipeTechnique).name.data());
+        painter.drawText(QRectF(0, 4, x - 6, 20), Qt::AlignRight, a);
+        painter.drawText(QRectF(x + 6, 4, width() - x - 6, 20), Qt::AlignLeft, b);
+    }
+    if (!m_renderError.isEmpty() || !m_scene.traceable) {
+        painter.fillRect(rect(), QColor(0, 0, 0, 160));
+        painter.setPen(Qt::white);
+        const QString text =
+            !m_scene.traceable
+                ? tr("%1 needs maps this material does not have yet.")
+                      .arg(QString::fromUtf8(info(m_scene.quality.technique).title.data()))
+                : m_renderError;
+        painter.drawText(rect().adjusted(10, 10, -10, -10), Qt::AlignCenter | Qt::TextWordWrap,
+                         text);
+    }
+    painter.end();
+    emit frameRendered();
+    emit statsChanged(); // the frame time
+}
+
+void PreviewWidget::drawHeatLegend(QPainter& painter) {
+    // The heat map's scale, bottom left: what blue, green, yellow and red mean.
+    const QFontMetrics fm(font());
+    const int h = fm.height();
+    const QRect bar(h / 2, height() - 2 * h, 8 * h, h / 2);
+    QLinearGradient gradient(bar.topLeft(), bar.topRight());
+    gradient.setColorAt(0.0, QColor(44, 95, 214));
+    gradient.setColorAt(0.25, QColor(63, 179, 79));
+    gradient.setColorAt(0.5, QColor(240, 208, 58));
+    gradient.setColorAt(1.0, QColor(216, 52, 44));
+    painter.fillRect(bar.adjusted(-4, -4, 4, h + 4), QColor(0, 0, 0, 150));
+    painter.fillRect(bar, gradient);
+    painter.setPen(Qt::white);
+    const QRect labels(bar.left(), bar.bottom() + 2, bar.width(), h);
+    painter.drawText(labels, Qt::AlignLeft, QStringLiteral("0"));
+    painter.drawText(labels, Qt::AlignHCenter, QStringLiteral("1"));
+    painter.drawText(labels, Qt::AlignRight, tr("≥2 texels"));
+}
+
+void PreviewWidget::mousePressEvent(QMouseEvent* event) {
+    emit activated();
+    m_lastPos = event->position();
+    const double divider = m_scene.overlays.wipePosition * width();
+    if (m_scene.overlays.wipe && std::abs(event->position().x() - divider) <= kWipeGrab)
+        m_drag = Drag::Wipe;
+    else if (event->modifiers() & Qt::ControlModifier)
+        m_drag = Drag::Light;
+    else
+        m_drag = Drag::Orbit;
+    event->accept();
+}
+
+void PreviewWidget::mouseMoveEvent(QMouseEvent* event) {
+    const QPointF delta = event->position() - m_lastPos;
+    m_lastPos = event->position();
+    switch (m_drag) {
+    case Drag::Orbit:
+        emit cameraDragged(orbit(m_scene.view.camera, delta));
+        break;
+    case Drag::Light:
+        emit lightDragged(moveLight(m_scene.view.light, delta));
+        break;
+    case Drag::Wipe:
+        emit wipeDragged(
+            static_cast<float>(std::clamp(event->position().x() / std::max(1, width()), 0.0, 1.0)));
+        break;
+    case Drag::None:
+        break;
+    }
+}
+
+void PreviewWidget::mouseReleaseEvent(QMouseEvent*) {
+    m_drag = Drag::None;
+}
+
+void PreviewWidget::mouseDoubleClickEvent(QMouseEvent* event) {
+    emit cameraDragged(defaultCamera());
+    event->accept();
+}
+
+void PreviewWidget::keyPressEvent(QKeyEvent* event) {
+    // Arrows orbit (Ctrl: move the light), +/- zoom: the view without a mouse.
+    const double step = 10.0 / kDegreesPerPixel; // ten degrees
+    QPointF delta;
+    switch (event->key()) {
+    case Qt::Key_Left:
+        delta = {-step, 0};
+        break;
+    case Qt::Key_Right:
+        delta = {step, 0};
+        break;
+    case Qt::Key_Up:
+        delta = {0, -step};
+        break;
+    case Qt::Key_Down:
+        delta = {0, step};
+        break;
+    case Qt::Key_Plus:
+    case Qt::Key_Equal:
+        emit cameraDragged(zoom(m_scene.view.camera, 1));
+        return;
+    case Qt::Key_Minus:
+        emit cameraDragged(zoom(m_scene.view.camera, -1));
+        return;
+    default:
+        QOpenGLWidget::keyPressEvent(event);
+        return;
+    }
+    if (event->modifiers() & Qt::ControlModifier)
+        emit lightDragged(moveLight(m_scene.view.light, delta));
+    else
+        emit cameraDragged(orbit(m_scene.view.camera, delta));
+}
+
+void PreviewWidget::wheelEvent(QWheelEvent* event) {
+    emit cameraDragged(zoom(m_scene.view.camera, event->angleDelta().y() / 120.0));
+    event->accept();
+}
+
+} // namespace px::studio

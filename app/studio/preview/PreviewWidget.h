@@ -1,0 +1,74 @@
+#pragma once
+// One viewport's live preview: a QOpenGLWidget whose context the renderer (parallax-render)
+// draws the scene into. It also measures the viewport's figures (frame time, fetches per pixel,
+// error against the exact intersection) and draws the error heat map and the A/B wipe.
+// Mouse: drag orbits, wheel zooms, Ctrl+drag moves the light, dragging the wipe's divider moves it.
+
+#include "preview/PreviewScene.h"
+
+#include <QOpenGLWidget>
+#include <memory>
+#include <optional>
+
+namespace px::studio {
+
+class PreviewRenderer;
+
+class PreviewWidget : public QOpenGLWidget {
+    Q_OBJECT
+public:
+    explicit PreviewWidget(QWidget* parent = nullptr);
+    ~PreviewWidget() override;
+
+    void setScene(const PreviewScene& scene);
+    const PreviewScene& scene() const { return m_scene; }
+    const PreviewStats& stats() const { return m_stats; }
+    // The renderer's failure, if the last frame could not be drawn (shader error, GL error).
+    QString renderError() const { return m_renderError; }
+    // Frames drawn so far (tests wait for the next one).
+    int framesRendered() const { return m_frames; }
+    // The value a uniform of the program that drew the last frame holds (tests: sliders reach
+    // the GPU). Empty when the program has no such uniform.
+    std::optional<float> uniformValue(const QString& name);
+
+    QSize sizeHint() const override { return {320, 240}; }
+
+signals:
+    void activated();
+    void cameraDragged(const px::studio::OrbitCamera& camera);
+    void lightDragged(const px::studio::DirectionalLight& light);
+    void wipeDragged(float position);
+    void frameRendered();
+    void statsChanged();
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int w, int h) override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    enum class Drag { None, Orbit, Light, Wipe };
+    void releaseGl();
+    // The figures against the exact intersection need two extra passes: taken once the scene
+    // has stayed still for a moment, not on every frame of a drag.
+    void measure();
+    void drawHeatLegend(class QPainter& painter);
+
+    PreviewScene m_scene;
+    PreviewStats m_stats;
+    QString m_renderError;
+    int m_frames = 0;
+    std::unique_ptr<PreviewRenderer> m_renderer;
+    class QTimer* m_measureTimer;
+    bool m_measured = false;
+    Drag m_drag = Drag::None;
+    QPointF m_lastPos;
+};
+
+} // namespace px::studio

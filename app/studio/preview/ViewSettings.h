@@ -1,0 +1,33 @@
+#pragma once
+// How a viewport looks at the material: the renderer's orbit camera, directional light and mesh,
+// and the overlays. View state, not part of the material: not saved with it and not undone (like
+// a camera in any 3D tool).
+
+#include "parallax/render/Camera.h" // parallax-render: OrbitCamera, DirectionalLight
+#include "parallax/render/Mesh.h"   // parallax-render: MeshKind
+#include "parallax/trace/Technique.h"
+
+namespace px::studio {
+
+using px::DirectionalLight;
+using px::MeshKind;
+using px::OrbitCamera;
+
+// The camera a viewport starts with: the plane seen from above at an angle, filling the view.
+OrbitCamera defaultCamera();
+
+// Shared by every viewport while views are linked.
+struct SharedView {
+    OrbitCamera camera = defaultCamera();
+    DirectionalLight light;
+    MeshKind mesh = MeshKind::Plane;
+};
+
+struct ViewOverlays {
+    bool heatMap = false;
+    bool wipe = false;                          // A/B wipe on
+    Technique wipeTechnique = Technique::Exact; // the right-hand side (B)
+    float wipePosition = 0.5f;                  // divider, 0..1 across the view
+};
+
+} // namespace px::studio

@@ -1,0 +1,206 @@
+#include "preview/Viewport.h"
+
+#include "model/MaterialDocument.h"
+#include "preview/PreviewPlaceholder.h"
+#include "preview/PreviewWidget.h"
+#include "widgets/Hints.h"
+#include "widgets/ImageConvert.h"
+#include "widgets/TechniqueCombo.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace px::studio {
+
+Viewport::Viewport(int index, MaterialDocument* document, const QString& liveReason,
+                   QWidget* parent)
+    : QFrame(parent), m_index(index), m_document(document) {
+    setFrameShape(QFrame::StyledPanel);
+    setLineWidth(2);
+    setObjectName(QStringLiteral("viewport%1").arg(index + 1));
+
+    m_title = new QLabel(QString::number(index + 1), this);
+    m_title->setToolTip(tr("Viewport %1 (Alt+%1 makes it active)").arg(index + 1));
+    m_technique = new TechniqueCombo(this);
+    m_heatMap = new QToolButton(this);
+    m_heatMap->setText(tr("Error"));
+    m_heatMap->setCheckable(true);
+    m_heatMap->setToolTip(hints::heatMap());
+    m_heatMap->setStatusTip(hints::heatMap());
+    m_wipe = new QToolButton(this);
+    m_wipe->setText(tr("A|B"));
+    m_wipe->setCheckable(true);
+    m_wipe->setToolTip(hints::wipe());
+    m_wipe->setStatusTip(hints::wipe());
+    m_wipeTechnique = new TechniqueCombo(this);
+    m_wipeTechnique->setToolTip(tr("The technique on the right of the A/B wipe."));
+    m_wipeTechnique->setVisible(false);
+
+    auto* header = new QHBoxLayout;
+    header->setContentsMargins(4, 2, 4, 2);
+    header->addWidget(m_title);
+    header->addWidget(m_technique);
+    header->addStretch();
+    header->addWidget(m_heatMap);
+    header->addWidget(m_wipe);
+    header->addWidget(m_wipeTechnique);
+
+    QWidget* content = nullptr;
+    if (liveReason.isEmpty()) {
+        m_preview = new PreviewWidget(this);
+        content = m_preview;
+        connect(m_preview, &PreviewWidget::activated, this, [this] { emit activated(m_index); });
+        connect(m_preview, &PreviewWidget::cameraDragged, this,
+                [this](const OrbitCamera& c) { emit cameraEdited(m_index, c); });
+        connect(m_preview, &PreviewWidget::lightDragged, this,
+                [this](const DirectionalLight& l) { emit lightEdited(m_index, l); });
+        connect(m_preview, &PreviewWidget::wipeDragged, this,
+                [this](float x) { editOverlays([x](ViewOverlays& o) { o.wipePosition = x; }); });
+        connect(m_preview, &PreviewWidget::statsChanged, this, &Viewport::showStats);
+    } else {
+        m_placeholder = new PreviewPlaceholder(liveReason, this);
+        content = m_placeholder;
+    }
+    content->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+
+    m_stats = new QLabel(this);
+    m_stats->setTextFormat(Qt::RichText);
+    m_stats->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_stats->setToolTip(tr("Frame time (CPU wall clock around the draw and glFinish), mean "
+                           "height fetches per pixel, and the error of each pixel's hit against "
+                           "the exact intersection, in texels (mean, 99th percentile and max), "
+                           "and the share of pixels whose hit lies on another surface (more than "
+                           "2 texels from the exact one): a few such pixels lift the mean above "
+                           "the p99."));
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->setSpacing(2);
+    layout->addLayout(header);
+    layout->addWidget(content, 1);
+    layout->addWidget(m_stats);
+
+    connect(m_technique, &TechniqueCombo::techniqueChosen, this, [this](Technique t) {
+        m_document->edit(tr("Viewport %1: %2").arg(m_index + 1).arg(info(t).name.data()),
+                         [this, t](DocumentState& s) {
+                             if (s.view(m_index).technique != t)
+                                 s.setView(m_index, {t, info(t).defaults});
+                         });
+    });
+    connect(m_heatMap, &QToolButton::toggled, this,
+            [this](bool on) { editOverlays([on](ViewOverlays& o) { o.heatMap = on; }); });
+    connect(m_wipe, &QToolButton::toggled, this,
+            [this](bool on) { editOverlays([on](ViewOverlays& o) { o.wipe = on; }); });
+    connect(m_wipeTechnique, &TechniqueCombo::techniqueChosen, this,
+            [this](Technique t) { editOverlays([t](ViewOverlays& o) { o.wipeTechnique = t; }); });
+    connect(document, &MaterialDocument::changed, this, &Viewport::refresh);
+    refresh();
+}
+
+void Viewport::setActive(bool active) {
+    m_active = active;
+    // The frame alone (by its name), so the labels inside keep their colours.
+    setStyleSheet(
+        active ? QStringLiteral("QFrame#%1 { border: 2px solid palette(highlight); }")
+                     .arg(objectName())
+               : QStringLiteral("QFrame#%1 { border: 2px solid transparent; }").arg(objectName()));
+    QFont f = m_title->font();
+    f.setBold(active);
+    m_title->setFont(f);
+}
+
+void Viewport::setView(const SharedView& view) {
+    m_view = view;
+    pushScene();
+}
+
+void Viewport::setOverlays(const ViewOverlays& overlays) {
+    m_overlays = overlays;
+    m_heatMap->blockSignals(true);
+    m_wipe->blockSignals(true);
+    m_heatMap->setChecked(overlays.heatMap);
+    m_wipe->setChecked(overlays.wipe);
+    m_heatMap->blockSignals(false);
+    m_wipe->blockSignals(false);
+    m_wipeTechnique->setTechnique(overlays.wipeTechnique);
+    m_wipeTechnique->setVisible(overlays.wipe);
+    pushScene();
+}
+
+void Viewport::editOverlays(const std::function<void(ViewOverlays&)>& change) {
+    ViewOverlays next = m_overlays;
+    change(next);
+    setOverlays(next);
+    emit overlaysEdited(m_index, next);
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event) {
+    emit activated(m_index);
+    QFrame::mousePressEvent(event);
+}
+
+void Viewport::refresh() {
+    const DocumentState& s = m_document->state();
+    m_technique->updateAvailability(s);
+    m_technique->setTechnique(s.view(m_index).technique);
+    m_wipeTechnique->updateAvailability(s);
+    m_wipeTechnique->setTechnique(m_overlays.wipeTechnique);
+    if (m_placeholder) {
+        const MaterialAssets& a = *s.assets;
+        m_placeholder->setImage(!a.albedo.empty() ? toQImage(a.albedo, 256)
+                                                  : toQImage(a.height, 256));
+    }
+    pushScene();
+}
+
+void Viewport::pushScene() {
+    const DocumentState& s = m_document->state();
+    PreviewScene scene;
+    scene.material = s.material;
+    scene.quality = s.view(m_index);
+    scene.material.technique = scene.quality.technique;
+    scene.material.params = scene.quality.params;
+    scene.assets = s.assets;
+    scene.view = m_view;
+    scene.overlays = m_overlays;
+    scene.traceable = s.canTrace(scene.quality.technique) &&
+                      (!m_overlays.wipe || s.canTrace(m_overlays.wipeTechnique));
+    if (m_preview)
+        m_preview->setScene(scene);
+    showStats();
+}
+
+QString Viewport::statsText() const {
+    return m_stats->text();
+}
+
+void Viewport::showStats() {
+    const QString name =
+        QString::fromUtf8(info(m_document->state().view(m_index).technique).name.data());
+    if (!m_preview) {
+        m_stats->setText(name);
+        return;
+    }
+    const PreviewStats& st = m_preview->stats();
+    QString text = QStringLiteral("<b>%1</b>").arg(name);
+    if (st.frameMs > 0)
+        text += tr(" · %1 ms").arg(st.frameMs, 0, 'f', 1);
+    if (st.valid && st.pixels > 0)
+        text += tr(" · %1 fetches/px<br>error vs exact: mean %2, p99 %3, max %4 texels · %5 % on "
+                   "another surface")
+                    .arg(st.fetchesPerPixel, 0, 'f', 1)
+                    .arg(st.meanError, 0, 'f', 3)
+                    .arg(st.p99Error, 0, 'f', 3)
+                    .arg(st.maxError, 0, 'f', 2)
+                    .arg(100.0 * st.otherSurface / st.pixels, 0, 'f', 2);
+    else if (st.valid)
+        text += tr("<br>no surface in view");
+    else
+        text += tr("<br>measuring the error…");
+    m_stats->setText(text);
+}
+
+} // namespace px::studio

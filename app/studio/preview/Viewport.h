@@ -1,0 +1,73 @@
+#pragma once
+// One cell of the viewport grid: a header to pick the viewport's technique and overlays, the
+// live preview (or a placeholder), and a line with its figures: technique, frame time, fetches
+// per pixel, error against the exact intersection.
+
+#include "preview/PreviewScene.h"
+
+#include <QFrame>
+
+class QLabel;
+class QToolButton;
+
+namespace px::studio {
+
+class MaterialDocument;
+class PreviewPlaceholder;
+class PreviewWidget;
+class TechniqueCombo;
+
+class Viewport : public QFrame {
+    Q_OBJECT
+public:
+    // `liveReason` empty: a live preview; otherwise why there is none.
+    Viewport(int index, MaterialDocument* document, const QString& liveReason,
+             QWidget* parent = nullptr);
+
+    int index() const { return m_index; }
+    void setActive(bool active);
+    bool isActive() const { return m_active; }
+
+    void setView(const SharedView& view);
+    const SharedView& view() const { return m_view; }
+    void setOverlays(const ViewOverlays& overlays);
+    const ViewOverlays& overlays() const { return m_overlays; }
+
+    PreviewWidget* preview() const { return m_preview; } // null without a live preview
+    TechniqueCombo* techniqueCombo() const { return m_technique; }
+    TechniqueCombo* wipeCombo() const { return m_wipeTechnique; }
+    QToolButton* heatMapButton() const { return m_heatMap; }
+    QToolButton* wipeButton() const { return m_wipe; }
+    QString statsText() const;
+
+signals:
+    void activated(int index);
+    void cameraEdited(int index, const px::studio::OrbitCamera& camera);
+    void lightEdited(int index, const px::studio::DirectionalLight& light);
+    void overlaysEdited(int index, const px::studio::ViewOverlays& overlays);
+
+protected:
+    void mousePressEvent(QMouseEvent* event) override;
+
+private:
+    void refresh();
+    void pushScene();
+    void showStats();
+    void editOverlays(const std::function<void(ViewOverlays&)>& change);
+
+    int m_index;
+    MaterialDocument* m_document;
+    bool m_active = false;
+    SharedView m_view;
+    ViewOverlays m_overlays;
+    QLabel* m_title;
+    TechniqueCombo* m_technique;
+    QToolButton* m_heatMap;
+    QToolButton* m_wipe;
+    TechniqueCombo* m_wipeTechnique;
+    PreviewWidget* m_preview = nullptr;
+    PreviewPlaceholder* m_placeholder = nullptr;
+    QLabel* m_stats;
+};
+
+} // namespace px::studio

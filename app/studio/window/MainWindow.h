@@ -1,0 +1,141 @@
+#pragma once
+// The editor's window: the viewport grid in the middle, the parameter, maps, compare and history
+// panels around it, menus with shortcuts, status-bar hints, drag and drop, and the dirty prompt
+// on close. The document does the editing; the window does files, dialogs and messages.
+//
+// One class in four files, all here, because one file would be over 900 lines: MainWindow.cpp
+// builds the window and wires the panels, MainWindowFiles.cpp opens, saves and imports (menu,
+// dialog, drop), MainWindowMenus.cpp makes the actions, menus and shortcuts, and
+// MainWindowActions.h holds the actions more than one of them reach (private to the window).
+
+#include "jobs/BakeRunner.h"
+#include "parallax/material/MapKind.h"
+#include "parallax/sample/ProceduralMaps.h"
+
+#include <QMainWindow>
+#include <QPointer>
+#include <memory>
+#include <string>
+#include <vector>
+
+class QAction;
+class QLabel;
+class QMenu;
+
+namespace px {
+struct ImportedSet;
+}
+
+namespace px::studio {
+
+class ComparePanel;
+class ImportSummaryDialog;
+class MapsPanel;
+class MaterialDocument;
+class MaterialPanel;
+class RecentFiles;
+class TechniquePanel;
+class ViewPanel;
+class ViewportGrid;
+struct DocumentState;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    // `liveReason` empty: live previews; otherwise why there are none (shown in each viewport).
+    explicit MainWindow(const QString& liveReason, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    MaterialDocument* document() const { return m_document; }
+    ViewportGrid* viewports() const { return m_viewports; }
+    MaterialPanel* materialPanel() const { return m_materialPanel; }
+    TechniquePanel* techniquePanel() const { return m_techniquePanel; }
+    ViewPanel* viewPanel() const { return m_viewPanel; }
+    MapsPanel* mapsPanel() const { return m_mapsPanel; }
+    ComparePanel* comparePanel() const { return m_comparePanel; }
+    BakeRunner* baker() const { return m_baker; }
+    RecentFiles* recentFiles() const { return m_recent; }
+
+    // File operations as the menus, dialogs and drops use them. Each failure shows a message
+    // naming the file and leaves the document as it was; they return whether they succeeded.
+    void newSample(ProceduralMap kind, int size = 512);
+    bool openFile(const QString& path);
+    bool saveTo(const QString& path);
+    bool loadMap(MapKind kind, const QString& path, bool depth = false);
+    // A folder or files holding a texture set with a height map become a new material named after
+    // the set; `set` chooses where there are several (empty: ask, or refuse when not interactive).
+    // Files without a height map, or a single file, add to the material being edited.
+    bool importFolder(const QString& folder, const QString& set = {});
+    bool importFiles(const QStringList& paths, const QString& set = {}); // what a drop does
+    // The last import's summary (hidden when not interactive; tests read and click it).
+    ImportSummaryDialog* importSummary() const;
+    // Bakes in the background; over a normal map loaded from a file it asks first.
+    void startBake(BakeKind kind);
+
+    // The window's size, docks and layout as the user left them (settings), restored at start-up
+    // of an interactive session (not for screenshots and tests, which want a known layout).
+    void restoreLayout();
+
+    // The shortcut list of Help > Keyboard Shortcuts (F1), grouped by menu, as HTML.
+    QString shortcutsTable() const;
+
+    // The last problem shown to the user (tests read it; the message box shows it).
+    QString lastProblem() const { return m_lastProblem; }
+    // False: problems go to lastProblem() and the status bar only (tests, --screenshot).
+    void setInteractive(bool interactive) { m_interactive = interactive; }
+
+signals:
+    void problemShown(const QString& message);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void createPanels(const QString& liveReason);
+    void createActions();
+    void createMenus();
+    void updateTitle();
+    void fitToScreen();
+    void updateRecentMenu();
+    void showProblem(const QString& title, const QString& message);
+    void showNotes(const std::vector<std::string>& notes);
+    void adopt(const QString& text, const DocumentState& state);
+    bool importSet(const std::vector<std::string>& files, const QString& source, QString set);
+    void showImportSummary(const ImportedSet& set);
+    bool maybeSave(); // false: the user cancelled
+    bool save();
+    bool saveAs();
+    void openDialog();
+    void importMapDialog(MapKind kind);
+    void importFolderDialog();
+    void exportDialog();
+    void showShortcuts();
+    void runBake(BakeKind kind);
+    void onBakeFinished(const BakeOutcome& outcome);
+    void bakeMissingConeMaps();
+
+    MaterialDocument* m_document;
+    BakeRunner* m_baker;
+    RecentFiles* m_recent;
+    ViewportGrid* m_viewports = nullptr;
+    MaterialPanel* m_materialPanel = nullptr;
+    TechniquePanel* m_techniquePanel = nullptr;
+    ViewPanel* m_viewPanel = nullptr;
+    MapsPanel* m_mapsPanel = nullptr;
+    ComparePanel* m_comparePanel = nullptr;
+    QLabel* m_rendererLabel = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QMenu* m_panelsMenu = nullptr;
+    QPointer<ImportSummaryDialog> m_importSummary;
+    QString m_lastProblem;
+    bool m_interactive = true;
+    bool m_layoutRestored = false; // save it on close only if it was restored
+
+    struct Actions;
+    std::unique_ptr<Actions> m_actions;
+};
+
+} // namespace px::studio

@@ -1,0 +1,310 @@
+// MainWindow: opening, saving and importing, by menu, dialog and drop.
+
+#include "model/MapLoading.h"
+#include "model/MaterialDocument.h"
+#include "model/MaterialSaver.h"
+#include "model/SampleMaterial.h"
+#include "panels/ExportDialog.h"
+#include "panels/ImportSummaryDialog.h"
+#include "panels/MaterialPanel.h"
+#include "preview/ViewportGrid.h"
+#include "window/MainWindow.h"
+#include "window/RecentFiles.h"
+
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QMenu>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QStatusBar>
+
+namespace px::studio {
+
+namespace {
+
+const QString kImageFilter =
+    QObject::tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr *.bmp *.tga *.hdr);;All files (*)");
+const QString kMaterialFilter = QObject::tr("Materials (*.json);;All files (*)");
+
+bool isMaterialFile(const QString& path) {
+    return QFileInfo(path).suffix().compare(QLatin1String("json"), Qt::CaseInsensitive) == 0;
+}
+
+} // namespace
+
+void MainWindow::newSample(ProceduralMap kind, int size) {
+    if (!maybeSave())
+        return;
+    m_document->reset(makeSampleState(kind, size), {});
+    statusBar()->showMessage(
+        tr("The built-in %1 sample: its maps are made here and saved with "
+           "the material.")
+            .arg(QString::fromUtf8(proceduralMapNames()[static_cast<std::size_t>(kind)].data())),
+        8000);
+}
+
+bool MainWindow::openFile(const QString& path) {
+    if (!maybeSave())
+        return false;
+    Result<Loaded> loaded = openMaterialFile(path.toStdString());
+    if (!loaded) {
+        showProblem(tr("Cannot open the material"), QString::fromStdString(loaded.error().message));
+        return false;
+    }
+    m_document->reset(loaded->state, QFileInfo(path).absoluteFilePath());
+    m_recent->add(path);
+    showNotes(loaded->notes);
+    bakeMissingConeMaps();
+    return true;
+}
+
+void MainWindow::bakeMissingConeMaps() {
+    // A viewport on a cone technique without its map (a material saved without one, a new height
+    // map): bake it in the background; the viewport says it is waiting meanwhile.
+    const DocumentState& s = m_document->state();
+    if (!s.hasMap(MapKind::Height) || m_baker->isBusy())
+        return;
+    bool cone = false, relaxed = false;
+    for (int v = 0; v < m_viewports->layoutCount(); ++v) {
+        const TechniqueInfo& t = info(s.view(v).technique);
+        cone |= t.needsConeMap && !s.hasMap(MapKind::Cone);
+        relaxed |= t.needsRelaxedConeMap && !s.hasMap(MapKind::RelaxedCone);
+    }
+    if (cone)
+        startBake(BakeKind::Cone);
+    if (relaxed)
+        startBake(BakeKind::RelaxedCone);
+}
+
+bool MainWindow::saveTo(const QString& path) {
+    Result<DocumentState> saved = saveDocumentState(m_document->state(), path.toStdString());
+    if (!saved) {
+        showProblem(tr("Cannot save the material"), QString::fromStdString(saved.error().message));
+        return false;
+    }
+    m_document->markSaved(*saved, QFileInfo(path).absoluteFilePath());
+    m_recent->add(path);
+    statusBar()->showMessage(tr("Saved %1.").arg(QFileInfo(path).fileName()), 5000);
+    return true;
+}
+
+bool MainWindow::save() {
+    if (m_document->filePath().isEmpty())
+        return saveAs();
+    return saveTo(m_document->filePath());
+}
+
+bool MainWindow::saveAs() {
+    QString suggestion = m_document->filePath();
+    if (suggestion.isEmpty())
+        suggestion = QString::fromStdString(m_document->material().name) + QStringLiteral(".json");
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save Material"), suggestion, kMaterialFilter);
+    if (path.isEmpty())
+        return false;
+    return saveTo(path);
+}
+
+bool MainWindow::maybeSave() {
+    if (!m_document->isDirty() || !m_interactive)
+        return true;
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved changes"),
+        tr("%1 has changes that are not saved. Save them?").arg(m_document->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::adopt(const QString& text, const DocumentState& state) {
+    m_document->edit(text, [&](DocumentState& s) { s = state; });
+    bakeMissingConeMaps();
+}
+
+bool MainWindow::loadMap(MapKind kind, const QString& path, bool depth) {
+    if (kind == MapKind::Height && !depth) {
+        const std::optional<SuffixMatch> match = mapKindFromFileName(path.toStdString());
+        depth = match && match->depth;
+    }
+    Result<Loaded> loaded = loadMapFile(m_document->state(), kind, path.toStdString(), depth);
+    if (!loaded) {
+        showProblem(
+            tr("Cannot load the %1 map").arg(QString::fromUtf8(mapTitle(kind).data()).toLower()),
+            QString::fromStdString(loaded.error().message));
+        return false;
+    }
+    adopt(tr("Load %1 map").arg(QString::fromUtf8(mapTitle(kind).data()).toLower()), loaded->state);
+    statusBar()->showMessage(tr("Loaded %1 as the %2 map.")
+                                 .arg(QFileInfo(path).fileName())
+                                 .arg(QString::fromUtf8(mapTitle(kind).data()).toLower()),
+                             6000);
+    showNotes(loaded->notes);
+    return true;
+}
+
+bool MainWindow::importFolder(const QString& folder, const QString& set) {
+    Result<std::vector<std::string>> files = folderFiles(folder.toStdString());
+    if (!files) {
+        showProblem(tr("Cannot import the folder"), QString::fromStdString(files.error().message));
+        return false;
+    }
+    return importSet(*files, folder, set);
+}
+
+bool MainWindow::importFiles(const QStringList& paths, const QString& set) {
+    if (paths.size() == 1 && isMaterialFile(paths.front()))
+        return openFile(paths.front());
+    if (paths.size() == 1 && QFileInfo(paths.front()).isDir())
+        return importFolder(paths.front(), set);
+    std::vector<std::string> files;
+    for (const QString& p : paths)
+        files.push_back(p.toStdString());
+    // One image is one map of the material being edited (an undoable step), known by its
+    // suffix; with no known suffix, the height map: that is what this editor is about.
+    if (paths.size() == 1) {
+        const std::optional<SuffixMatch> match = mapKindFromFileName(files.front());
+        return loadMap(match ? match->kind : MapKind::Height, paths.front());
+    }
+    return importSet(files, paths.size() == 1 ? paths.front() : tr("the dropped files"), set);
+}
+
+bool MainWindow::importSet(const std::vector<std::string>& files, const QString& source,
+                           QString set) {
+    const std::vector<std::string> names = textureSetNames(files);
+    if (set.isEmpty() && names.size() > 1 && m_interactive) {
+        // Never mixed: the user says which.
+        QStringList items;
+        for (const std::string& name : names)
+            items << QString::fromStdString(name);
+        bool ok = false;
+        set = QInputDialog::getItem(this, tr("Which texture set?"),
+                                    tr("%1 holds %2 texture sets. Import which one?")
+                                        .arg(QFileInfo(source).fileName())
+                                        .arg(items.size()),
+                                    items, 0, false, &ok);
+        if (!ok)
+            return false;
+    }
+    Result<TextureSetPlan> plan = planTextureSet(files, source.toStdString(), set.toStdString());
+    if (!plan) {
+        showProblem(tr("Nothing imported"), QString::fromStdString(plan.error().message));
+        return false;
+    }
+    // Files without a height map are not a material of their own: they add to this one.
+    if (!plan->find(MapKind::Height)) {
+        Result<Loaded> loaded = loadMaps(m_document->state(), plan->assigned);
+        if (!loaded) {
+            showProblem(tr("Cannot import the maps"),
+                        QString::fromStdString(loaded.error().message));
+            return false;
+        }
+        adopt(tr("Import %n map(s)", nullptr, static_cast<int>(plan->assigned.size())),
+              loaded->state);
+        showNotes(loaded->notes);
+        return true;
+    }
+    if (!maybeSave())
+        return false;
+    Result<ImportedSet> imported = importTextureSet(*plan);
+    if (!imported) {
+        showProblem(tr("Cannot import the texture set"),
+                    QString::fromStdString(imported.error().message));
+        return false;
+    }
+    DocumentState state = importedState(*imported);
+    state.views = m_document->state().views; // the viewports' techniques are not the material's
+    m_document->reset(std::move(state), {});
+    showImportSummary(*imported);
+    bakeMissingConeMaps();
+    return true;
+}
+
+ImportSummaryDialog* MainWindow::importSummary() const {
+    return m_importSummary;
+}
+
+void MainWindow::showImportSummary(const ImportedSet& set) {
+    delete m_importSummary; // the previous import's, if still open
+    m_importSummary = new ImportSummaryDialog(set, this);
+    m_importSummary->setAttribute(Qt::WA_DeleteOnClose);
+    connect(m_importSummary, &ImportSummaryDialog::flipRequested, m_materialPanel,
+            &MaterialPanel::flipDepth);
+    statusBar()->showMessage(QString::fromStdString(set.relief.summary), 15000);
+    if (m_interactive)
+        m_importSummary->show();
+}
+
+void MainWindow::openDialog() {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Material"), {}, kMaterialFilter);
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+void MainWindow::importMapDialog(MapKind kind) {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Load %1 Map").arg(QString::fromUtf8(mapTitle(kind).data())), {}, kImageFilter);
+    if (!path.isEmpty())
+        loadMap(kind, path);
+}
+
+void MainWindow::importFolderDialog() {
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Import a Folder of Maps"));
+    if (!folder.isEmpty())
+        importFolder(folder);
+}
+
+void MainWindow::exportDialog() {
+    if (m_document->state().anyUnsaved() || m_document->filePath().isEmpty()) {
+        const auto answer = QMessageBox::question(
+            this, tr("Save first"),
+            tr("Some maps were made here and have no file yet. Save the material first?"),
+            QMessageBox::Save | QMessageBox::Cancel, QMessageBox::Save);
+        if (answer != QMessageBox::Save || !save())
+            return;
+    }
+    ExportDialog dialog(m_document->material(), m_document->filePath(), this);
+    dialog.exec();
+}
+
+void MainWindow::updateRecentMenu() {
+    if (!m_recentMenu)
+        return;
+    m_recentMenu->clear();
+    for (const QString& file : m_recent->files()) {
+        QAction* a = m_recentMenu->addAction(QFileInfo(file).fileName());
+        a->setStatusTip(file);
+        connect(a, &QAction::triggered, this, [this, file] {
+            if (!openFile(file) && !QFileInfo::exists(file))
+                m_recent->remove(file);
+        });
+    }
+    if (!m_recent->files().isEmpty()) {
+        m_recentMenu->addSeparator();
+        m_recentMenu->addAction(tr("Clear Recent Files"), m_recent, &RecentFiles::clear);
+    }
+    m_recentMenu->setEnabled(!m_recent->files().isEmpty());
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    QStringList paths;
+    for (const QUrl& url : event->mimeData()->urls()) {
+        if (url.isLocalFile())
+            paths << url.toLocalFile();
+    }
+    if (paths.isEmpty())
+        return;
+    event->acceptProposedAction();
+    importFiles(paths);
+}
+
+} // namespace px::studio
