@@ -177,22 +177,74 @@ float pxFirstRoot(float A, float B, float C, float sMax) {
     return (best >= 0.0f && best <= sMax) ? best : -1.0f;
 }
 
+// a * b = p.x + p.y exactly (Dekker's product with Veltkamp's split at 2^12 + 1, no fused
+// multiply-add needed): on a long ray dX t reaches 10^6 cells, where a float keeps only 1/16 of a
+// cell, and the bilinear patch must be read where the ray is to far better than that.
+vec2 pxTwoProduct(float a, float b) {
+    PX_PRECISE float p = a * b;
+    PX_PRECISE float ca = 4097.0f * a;
+    PX_PRECISE float ah = ca - (ca - a);
+    PX_PRECISE float al = a - ah;
+    PX_PRECISE float cb = 4097.0f * b;
+    PX_PRECISE float bh = cb - (cb - b);
+    PX_PRECISE float bl = b - bh;
+    PX_PRECISE float e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+    return vec2(p, e);
+}
+
+// X0 + dX t - cell, the ray's position at t relative to `cell`, rounded once near the cell rather
+// than at the size of X: the integer parts cancel in integers (cell - floor(X0)) and against the
+// exact product dX t, and only the fractions are added in float.
+float pxCellOffset(int cell, float X0, float dX, float t) {
+    float i0 = floor(X0);
+    vec2 p = pxTwoProduct(dX, t);
+    PX_PRECISE float a = ((p.x - float(cell - int(i0))) + p.y) + (X0 - i0);
+    return a;
+}
+
+// Where the ray enters (lo) and leaves (hi) the cell on one axis, in s = t - ta, from its offset a
+// in the cell at ta: exact to the rounding of a short quotient, where ta itself (a border t of a
+// long ray, rounded) may lie a hundredth of a cell to either side of the border. With clamp the
+// cells at and past the map's edge are constant outward, so their patch holds to infinity there
+// (the pyramid's outermost nodes solve them so).
+vec2 pxCellSpan(float a, float dX, int cell, int size) {
+    float aLo = !pxWrapRepeat && cell <= -1 ? -PX_BIG : 0.0f;
+    float aHi = !pxWrapRepeat && cell >= size - 1 ? PX_BIG : 1.0f;
+    if (dX > 0.0f)
+        return vec2((aLo - a) / dX, (aHi - a) / dX);
+    if (dX < 0.0f)
+        return vec2((aHi - a) / dX, (aLo - a) / dX);
+    return vec2(-PX_BIG, PX_BIG);
+}
+
 // The exact first hit of the ray with the bilinear patch of `cell` (corner heights h00, h10, h01,
 // h11) for t in [ta, tb], or -1. X0, dXY: cell-space position at t = 0 and its derivative (cells
-// per unit t).
+// per unit t). On a long ray ta and tb are border t's rounded to a float, far coarser there than
+// the cell: the patch is solved over the ray's own span in the cell instead, with ta and tb only
+// bounding it to within a few of their ulps (PX_SPAN_SLACK), so neighbouring cells neither
+// overlap nor leave a gap and the patch is never read outside its cell.
+#define PX_SPAN_SLACK 4.8e-7f
 float pxSolvePatch(vec4 h, ivec2 cell, vec2 X0, vec2 dXY, float ta, float tb) {
-    float ax = X0.x + dXY.x * ta - float(cell.x);
-    float ay = X0.y + dXY.y * ta - float(cell.y);
+    float ax = pxCellOffset(cell.x, X0.x, dXY.x, ta);
+    float ay = pxCellOffset(cell.y, X0.y, dXY.y, ta);
+    vec2 sx = pxCellSpan(ax, dXY.x, cell.x, pxMapSize.x);
+    vec2 sy = pxCellSpan(ay, dXY.y, cell.y, pxMapSize.y);
+    float lo = max(max(sx.x, sy.x), -ta * PX_SPAN_SLACK);
+    float hi = min(min(sx.y, sy.y), min(tb - ta + tb * PX_SPAN_SLACK, 1.0f - ta));
+    if (lo > hi)
+        return -1.0f;
+    ax += dXY.x * lo;
+    ay += dXY.y * lo;
     float k = h.x - h.y - h.z + h.w;
     float hx = h.y - h.x;
     float hy = h.z - h.x;
-    float C = h.x + hx * ax + hy * ay + k * ax * ay - (1.0f - ta);
+    float C = h.x + hx * ax + hy * ay + k * ax * ay - ((1.0f - ta) - lo);
     if (C >= 0.0f)
-        return ta;
+        return ta + lo;
     float A = k * dXY.x * dXY.y;
     float B = hx * dXY.x + hy * dXY.y + k * (ax * dXY.y + ay * dXY.x) + 1.0f;
-    float s = pxFirstRoot(A, B, C, tb - ta);
-    return s >= 0.0f ? ta + s : -1.0f;
+    float s = pxFirstRoot(A, B, C, hi - lo);
+    return s >= 0.0f ? ta + (lo + s) : -1.0f;
 }
 
 // The same, reading the cell's corners (one fetch).
