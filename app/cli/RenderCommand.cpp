@@ -117,9 +117,11 @@ Result<Material> materialFrom(const RenderOptions& o, MaterialAssets& assets) {
         m.technique = *parseTechnique(*o.technique);
         m.params = info(m.technique).defaults;
     }
-    o.quality.applyTo(m.params);
-    if (Status s = validate(m.params); !s)
-        return s.error();
+    if (!m.autoQuality) { // with "auto" the quality options adjust the choice (below)
+        o.quality.applyTo(m.params);
+        if (Status s = validate(m.params); !s)
+            return s.error();
+    }
     if (o.scale)
         m.heightScale = *o.scale;
     if (o.normalSource)
@@ -137,13 +139,15 @@ Result<Material> materialFrom(const RenderOptions& o, MaterialAssets& assets) {
         m.tiling = *o.tiling;
 
     if (!o.material.empty()) {
-        // Only the maps this view reads: no cone map unless cone/relaxed-cone asks for one.
-        Result<MaterialAssets> loaded = loadMaterialAssets(m, o.material, mapsUsed(m));
+        // Only the maps this view reads: no cone map unless cone/relaxed-cone asks for one (with
+        // "auto", also those the measurement reads, loaded once).
+        const MapSet which = m.autoQuality ? withAutoInputs(m, mapsUsed(m)) : mapsUsed(m);
+        Result<MaterialAssets> loaded = loadMaterialAssets(m, o.material, which);
         if (!loaded)
             return loaded.error();
         if (m.autoQuality) {
             // Technique "auto": measured on this material's height map, as export resolves it;
-            // then the maps the chosen setting reads (a cone map for the cone techniques).
+            // then only the cone maps the chosen setting reads are kept.
             Result<ResolvedAuto> resolved = resolveAutoTechnique(m, loaded->height, loaded->cone,
                                                                  loaded->relaxedCone, o.material);
             if (!resolved)
@@ -153,9 +157,11 @@ Result<Material> materialFrom(const RenderOptions& o, MaterialAssets& assets) {
             o.quality.applyTo(m.params); // --layers and the like adjust the chosen setting
             if (Status s = validate(m.params); !s)
                 return s.error();
-            loaded = loadMaterialAssets(m, o.material, mapsUsed(m));
-            if (!loaded)
-                return loaded.error();
+            const MapSet used = mapsUsed(m);
+            if (!used.cone)
+                loaded->cone = ConeMap{};
+            if (!used.relaxedCone)
+                loaded->relaxedCone = ConeMap{};
         }
         assets = std::move(*loaded);
         return m;

@@ -6,7 +6,7 @@
 namespace px::test {
 
 std::string rendererKey(const std::string& glRenderer) {
-    if (glRenderer.find("llvmpipe") != std::string::npos)
+    if (isLlvmpipe(glRenderer))
         return "llvmpipe";
     std::string key;
     for (char c : glRenderer) {

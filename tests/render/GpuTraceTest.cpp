@@ -52,7 +52,7 @@ void GpuTraceTest::gpuEqualsCpu() {
     maps.pyramid = &pyramid;
 
     ShaderCache shaders;
-    const bool bitExact = test::glContext()->info().renderer.find("llvmpipe") != std::string::npos;
+    const bool bitExact = test::isLlvmpipe(test::glContext()->info().renderer);
     long long rays = 0, fetchesDiffer = 0;
     double worst = 0.0;
     for (const TechniqueInfo& technique : allTechniques()) {

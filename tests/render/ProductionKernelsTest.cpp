@@ -65,8 +65,7 @@ void ProductionKernelsTest::productionErrorMatchesVerifyAtEveryBenchAngle() {
     ShaderCache shaders;
     // llvmpipe filters with exact weights; a GPU with 8-bit weights moves more near-ties (an H100:
     // relief at 87 degrees, 1.5% of the rays): there the bound follows the 8-bit CPU model.
-    const bool exactWeights =
-        test::glContext()->info().renderer.find("llvmpipe") != std::string::npos;
+    const bool exactWeights = test::isLlvmpipe(test::glContext()->info().renderer);
     QStringList failures;
     qInfo("technique     polar  p99 verify  p99 production  |diff|  rays > 0.05 apart  max apart  "
           "fetches verify/production");

@@ -9,6 +9,10 @@
 
 namespace px::test {
 
+bool isLlvmpipe(const std::string& glRenderer) {
+    return glRenderer.find("llvmpipe") != std::string::npos;
+}
+
 HeadlessContext* glContext() {
     static std::unique_ptr<HeadlessContext> context;
     static std::string failure;

@@ -17,6 +17,10 @@ namespace px::test {
 // none can be made.
 HeadlessContext* glContext();
 
+// Mesa's llvmpipe: it runs the verify kernels as the CPU does, to the bit, filters with exact
+// weights and made the goldens. On other renderers the tests allow what rounding may move.
+bool isLlvmpipe(const std::string& glRenderer);
+
 // The built-in bricks at `size` texels with their procedural albedo: the sample every golden
 // image shows.
 MaterialAssets bricksAssets(int size, bool withAlbedo = true);

@@ -42,10 +42,11 @@ Status traceOnGpu(ShaderCache& shaders, const TraceMaps& maps, Technique techniq
         return program.error();
     const ShaderProgram& p = **program;
 
-    // uv0 per ray as the CPU traces it: the double origin, reduced to the tile with repeat.
+    // uv0 per ray as the CPU traces it: the double origin, reduced to the tile with repeat. The
+    // tile bases are kept only to return the hits (a timing reads none back).
     const bool repeat = maps.wrap == WrapMode::Repeat;
     std::vector<float> origins(static_cast<std::size_t>(R) * R * 2);
-    std::vector<glm::dvec2> bases(static_cast<std::size_t>(R) * R);
+    std::vector<glm::dvec2> bases(hits ? static_cast<std::size_t>(R) * R : 0);
     for (int j = 0; j < R; ++j) {
         for (int i = 0; i < R; ++i) {
             const glm::dvec2 uv0 = rayOrigin(scene, i, j);
@@ -54,7 +55,8 @@ Status traceOnGpu(ShaderCache& shaders, const TraceMaps& maps, Technique techniq
             const std::size_t k = static_cast<std::size_t>(j) * R + i;
             origins[2 * k] = local.x;
             origins[2 * k + 1] = local.y;
-            bases[k] = base;
+            if (hits)
+                bases[k] = base;
         }
     }
 

@@ -4,6 +4,14 @@
 
 namespace px {
 
+MapSet withAutoInputs(const Material& material, MapSet used) {
+    const MapSet present = mapsPresent(material.maps);
+    used.height = true;
+    used.cone = used.cone || present.cone;
+    used.relaxedCone = used.relaxedCone || present.relaxedCone;
+    return used;
+}
+
 Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const HeightField& height,
                                           const ConeMap& cone, const ConeMap& relaxedCone,
                                           const std::string& source, bool godotLayers) {

@@ -115,14 +115,7 @@ MapSet mapsFor(const Material& m, ExportFormat format) {
 
 // Technique "auto" measures the cone techniques on the material's own cone maps where it has them.
 MapSet mapsToLoad(const Material& m, ExportFormat format) {
-    MapSet set = mapsFor(m, format);
-    if (m.autoQuality) {
-        const MapSet present = mapsPresent(m.maps);
-        set.height = true;
-        set.cone = present.cone;
-        set.relaxedCone = present.relaxedCone;
-    }
-    return set;
+    return m.autoQuality ? withAutoInputs(m, mapsFor(m, format)) : mapsFor(m, format);
 }
 
 } // namespace

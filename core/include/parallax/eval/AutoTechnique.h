@@ -8,6 +8,7 @@
 #include "parallax/eval/EngineMarch.h"
 #include "parallax/heightfield/HeightField.h"
 #include "parallax/material/Material.h"
+#include "parallax/material/MaterialAssets.h"
 
 #include <optional>
 #include <string>
@@ -23,6 +24,11 @@ struct ResolvedAuto {
 // A material without autoQuality comes back unchanged (and no note). Errors: the height map is
 // missing or empty, or the recommendation's own (naming `source`); a budget nothing meets.
 // `cone` and `relaxedCone` may be empty (baked when a candidate needs them).
+// `used` plus what resolving "auto" reads: the height map, and the cone maps the material has
+// files for (candidates that read one are measured with it; a missing one is baked). Render and
+// export load this set once, resolve, and use what the choice reads.
+MapSet withAutoInputs(const Material& material, MapSet used);
+
 Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const HeightField& height,
                                           const ConeMap& cone, const ConeMap& relaxedCone,
                                           const std::string& source, bool godotLayers = false);
