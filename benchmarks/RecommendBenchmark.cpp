@@ -56,7 +56,7 @@ void run(benchmark::State& state, Mode mode) {
     }
     double cpu = 0.0, wall = 0.0;
     std::string chosen;
-    for (auto _ : state) {
+    for (auto _ : state) { // NOLINT(clang-analyzer-deadcode.DeadStores): the loop idiom
         state.PauseTiming();
         clearRecommendationCache();
         if (mode == Mode::Cached) {

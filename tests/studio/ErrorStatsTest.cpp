@@ -26,6 +26,7 @@ private slots:
         std::mt19937 rng(seed);
         std::uniform_real_distribution<float> uv(0.0f, 1.0f), near(0.0f, 0.02f), far(5.0f, 40.0f);
         std::vector<int> outliers;
+        outliers.reserve(5);
         for (int i = 0; i < 5; ++i)
             outliers.push_back(static_cast<int>(rng() % (w * h)));
         double worst = 0.0;

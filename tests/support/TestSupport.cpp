@@ -34,9 +34,9 @@ double denseMarchT(const HeightField& field, WrapMode wrap, double u0, double v0
     auto f = [&](double t) {
         return bilinearHeight(field, wrap, u0 + px * t, v0 + py * t) - (1 - t);
     };
-    double prevT = 0.0, prevF = f(0.0);
-    if (prevF >= 0)
+    if (f(0.0) >= 0)
         return 0.0;
+    double prevT = 0.0;
     for (int k = 1; k <= samples; ++k) {
         const double t = static_cast<double>(k) / samples;
         const double ft = f(t);
@@ -49,7 +49,6 @@ double denseMarchT(const HeightField& field, WrapMode wrap, double u0, double v0
             return hi;
         }
         prevT = t;
-        prevF = ft;
     }
     return 1.0;
 }

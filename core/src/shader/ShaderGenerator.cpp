@@ -215,9 +215,9 @@ Result<GeneratedProgram> generateProgram(const VariantKey& requested) {
     // The vertex stage reads no feature of the key, only which outputs the fragment stage keeps
     // (Filament's per-stage filter): its key, name and text are those alone.
     program.vertexKey.trace = trace;
-    for (const std::string& input : inputs)
-        program.vertexKey.outputs.push_back(input);
+    program.vertexKey.outputs.assign(inputs.begin(), inputs.end());
     std::vector<std::string> vertexDefines;
+    vertexDefines.reserve(inputs.size());
     for (const std::string& input : inputs)
         vertexDefines.push_back("PX_FRAGMENT_READS_" + macroName(input));
     StageOptions vertexOptions;

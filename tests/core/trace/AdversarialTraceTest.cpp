@@ -208,7 +208,8 @@ void AdversarialTraceTest::exactMatchesADoubleWalk() {
                 for (double azimuth : {35.0, 90.0}) {
                     const glm::vec2 P = parallaxVector(0.1f, polar, azimuth);
                     for (int k = 0; k < 144; ++k) {
-                        const glm::dvec2 uv0((k % 12 + 0.5) / 12, (k / 12 + 0.5) / 12);
+                        const int column = k % 12, row = k / 12;
+                        const glm::dvec2 uv0((column + 0.5) / 12, (row + 0.5) / 12);
                         const TraceResult r = exact->trace(uv0, P);
                         const double t = test::doubleWalkT(field, wrap, uv0, glm::dvec2(P));
                         const double e = std::hypot((r.t - t) * P.x * field.width,

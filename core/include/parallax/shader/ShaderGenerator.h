@@ -53,6 +53,7 @@ struct VertexKey {
     // "mesh+vNormal+vPosition+vUv", "trace": the vertex shader's name.
     std::string name() const;
     friend bool operator==(const VertexKey&, const VertexKey&) = default;
+    // NOLINTNEXTLINE(modernize-use-nullptr): clang-tidy 15 misreads the defaulted comparison's 0.
     friend auto operator<=>(const VertexKey&, const VertexKey&) = default;
 };
 
