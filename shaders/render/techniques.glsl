@@ -24,13 +24,9 @@ float pxTraceTechnique(vec2 uv0, vec2 P) {
 #endif
 }
 
-// As Tracer::trace: looking straight down, or with s = 0, every technique is one fetch.
+// As Tracer::trace, through the same rules (trace/common.glsl).
 float pxTraceRay(vec2 uv0, vec2 P) {
-    if ((P.x == 0.0f && P.y == 0.0f) || pxScale == 0.0f)
+    if (pxLooksStraightDown(P))
         return pxTraceStraightDown(uv0);
-    float t = pxTraceTechnique(uv0, P);
-    // The kernels keep t in [0, 1]; this only guards against NaN heights reaching them.
-    if (!(t >= 0.0f))
-        t = 0.0f;
-    return min(t, 1.0f);
+    return pxKeepT(pxTraceTechnique(uv0, P));
 }

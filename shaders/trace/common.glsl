@@ -283,6 +283,17 @@ float pxTraceStraightDown(vec2 uv0) {
     return 1.0f - pxHeight(uv0);
 }
 
+// The rules around every technique's trace, the one definition for the CPU tracer (Tracer.cpp)
+// and the shaders (render/techniques.glsl), which each choose the technique their own way.
+bool pxLooksStraightDown(vec2 P) {
+    return (P.x == 0.0f && P.y == 0.0f) || pxScale == 0.0f;
+}
+
+// The kernels keep t in [0, 1]; this only guards against NaN heights reaching them.
+float pxKeepT(float t) {
+    return t >= 0.0f ? min(t, 1.0f) : 0.0f;
+}
+
 // The offset a ray may travel is bounded (docs/techniques.md: never divide by a z that can be 0):
 // grazing views reach the bound instead of infinity, and NaN becomes a straight-down view. The
 // bound is on the length, so the direction (the azimuth) is kept; infinite components give the

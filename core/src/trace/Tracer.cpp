@@ -109,7 +109,7 @@ TraceResult Tracer::traceWith(Kernel& k, glm::dvec2 uv0, glm::vec2 rawP) const {
     float t = 0.0f;
     if (!parallax) {
         t = 0.0f;
-    } else if ((P.x == 0.0f && P.y == 0.0f) || m_scale == 0.0f) {
+    } else if (k.pxLooksStraightDown(P)) {
         t = k.pxTraceStraightDown(local);
     } else {
         switch (m_technique) {
@@ -145,11 +145,7 @@ TraceResult Tracer::traceWith(Kernel& k, glm::dvec2 uv0, glm::vec2 rawP) const {
             break;
         }
     }
-    // The kernels keep t in [0, 1]; this only guards against NaN heights reaching them.
-    if (!(t >= 0.0f))
-        t = 0.0f;
-    if (t > 1.0f)
-        t = 1.0f;
+    t = k.pxKeepT(t);
     TraceResult r;
     r.u = uv0.x + static_cast<double>(P.x) * t;
     r.v = uv0.y + static_cast<double>(P.y) * t;

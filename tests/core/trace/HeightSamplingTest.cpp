@@ -37,6 +37,7 @@ class HeightSamplingTest : public QObject {
 private slots:
     void texelCentresAndMidpoints();
     void wrapAndClampAtEdges();
+    void kernelWrapIsWrapIndex();
     void agreesWithOracleEverywhere();
     void countsFetchesAndGathersCorners();
 };
@@ -49,6 +50,22 @@ void HeightSamplingTest::texelCentresAndMidpoints() {
     QCOMPARE(h(0.25f, 0.75f), 0.5f);
     QCOMPARE(h(0.5f, 0.25f), 0.5f);
     QCOMPARE(h(0.5f, 0.5f), (0.0f + 1.0f + 0.5f + 0.25f) / 4);
+}
+
+// Texel wrapping is written twice, for the kernels (pxWrapIndex, pxNextIndex) and for the C++
+// bakers and samplers (wrapIndex): they must be one rule.
+void HeightSamplingTest::kernelWrapIsWrapIndex() {
+    kernel::TraceKernel k;
+    for (WrapMode mode : {WrapMode::Repeat, WrapMode::Clamp}) {
+        k.pxWrapRepeat = mode == WrapMode::Repeat;
+        for (int size : {1, 2, 3, 7, 64}) {
+            for (int i = -5 * size - 3; i <= 5 * size + 3; ++i) {
+                const int wrapped = wrapIndex(i, size, mode);
+                QCOMPARE(k.pxWrapIndex(i, size), wrapped);
+                QCOMPARE(k.pxNextIndex(wrapped, i, size), wrapIndex(i + 1, size, mode));
+            }
+        }
+    }
 }
 
 void HeightSamplingTest::wrapAndClampAtEdges() {
