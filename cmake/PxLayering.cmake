@@ -1,0 +1,20 @@
+# Layering the link cannot enforce: the editor's two libraries share one include root
+# (app/studio), so the document model could include a widget's header. px_check_layer fails
+# configuring when a file under DIR includes a header from one of the FORBIDDEN folders.
+function(px_check_layer)
+  cmake_parse_arguments(ARG "" "DIR;LAYER" "FORBIDDEN" ${ARGN})
+  list(JOIN ARG_FORBIDDEN "|" forbidden)
+  list(JOIN ARG_FORBIDDEN "/, " named)
+  file(GLOB files "${ARG_DIR}/*.h" "${ARG_DIR}/*.cpp")
+  set(problems "")
+  foreach(file IN LISTS files)
+    file(STRINGS "${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"(${forbidden})/")
+    foreach(line IN LISTS lines)
+      string(STRIP "${line}" line)
+      string(APPEND problems "\n  ${file}: ${line}")
+    endforeach()
+  endforeach()
+  if(problems)
+    message(FATAL_ERROR "${ARG_LAYER} may not include headers from ${named}/:${problems}")
+  endif()
+endfunction()
