@@ -8,8 +8,8 @@
 #include "parallax/eval/WorkPrecision.h"
 #include "parallax/heightfield/HeightFieldLoader.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/render/GpuBenchTimer.h"
 #include "parallax/render/GpuTracer.h"
-#include "parallax/render/HeadlessBenchTimer.h"
 #include "parallax/sample/ProceduralMaps.h"
 #include "parallax/trace/ParallaxBound.h"
 #include "parallax/trace/TraceScene.h"
@@ -198,13 +198,14 @@ int runBenchCommand(const BenchOptions& o) {
     config.rays = o.rays;
     config.timingRepeats = o.repeats;
     if (o.gpu) {
-        HeadlessBenchOptions options;
+        GpuBenchOptions options;
         options.frames = o.gpuFrames;
         options.rays = o.gpuRays == 1440 ? 0 : o.gpuRays; // 1440^2: the frame itself
         options.kernels = o.kernels.flavour();
-        Result<std::unique_ptr<HeadlessBenchTimer>> timer = HeadlessBenchTimer::create(options);
+        Result<std::unique_ptr<GpuBenchTimer>> timer =
+            GpuBenchTimer::create(options, headlessBenchContext);
         if (timer) {
-            config.gpuTimer = [t = std::shared_ptr<HeadlessBenchTimer>(std::move(*timer))](
+            config.gpuTimer = [t = std::shared_ptr<GpuBenchTimer>(std::move(*timer))](
                                   const GpuFrameRequest& r) { return t->time(r); };
         } else {
             config.gpuUnavailable = timer.error().message;

@@ -33,7 +33,7 @@ QString viewportFigures(MainWindow& window) {
 } // namespace
 
 int runStudio(int argc, char** argv) {
-    setDefaultSurfaceFormat();
+    setUpOpenGl();
     // Fractional scale factors (125 %, 150 %) as they are, not rounded: sharp text and views.
     QGuiApplication::setHighDpiScaleFactorRoundingPolicy(
         Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);

@@ -98,6 +98,8 @@ private slots:
         QCOMPARE(compare->chart()->axes.back(), CostAxis::GpuTime);
         QCOMPARE(compare->axisCombo()->count(), 3);
         QVERIFY(compare->statusText().contains("GPU: ")); // the renderer and timing method
+        // No GL on the offscreen platform, so no context to share: a headless one, said so.
+        QVERIFY2(compare->statusText().contains("headless"), qPrintable(compare->statusText()));
         WorkPrecisionView* view = compare->chartView();
         QVERIFY(view->hasPanel());
         view->resize(700, 400);

@@ -3,11 +3,13 @@
 // baking a cone map enables the cone technique, undo restores, and a corrupt file changes nothing.
 
 #include "StudioTestSupport.h"
+#include "panels/ComparePanel.h"
 #include "panels/MapRow.h"
 #include "panels/MapsPanel.h"
 #include "panels/MaterialPanel.h"
 #include "panels/TechniquePanel.h"
 #include "panels/ViewPanel.h"
+#include "panels/WorkPrecisionView.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
@@ -17,9 +19,12 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QMessageBox>
+#include <QOpenGLContext>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QSlider>
+#include <QSpinBox>
 #include <QToolButton>
 
 using namespace px;
@@ -64,7 +69,7 @@ class StudioWindowTest : public QObject {
     QTemporaryDir m_dir;
 
 public:
-    static void initMain() { setDefaultSurfaceFormat(); }
+    static void initMain() { setUpOpenGl(); }
 
 private slots:
     void initTestCase() {
@@ -326,6 +331,27 @@ private slots:
             QVERIFY(changedPixels(last, now) > now.width() * now.height() / 20);
             last = now;
         }
+    }
+
+    // Compare's GPU milliseconds come from the GPU that draws the viewports: a context shared
+    // with theirs (Qt shares only within one device and driver), on the bench's worker thread.
+    void compareTimesOnTheViewportsGpu() {
+        auto w = makeWindow(1, 32);
+        QVERIFY(w);
+        QVERIFY(QOpenGLContext::globalShareContext());
+        ComparePanel* compare = w->comparePanel();
+        compare->parentWidget()->show();
+        compare->raysField()->setValue(8);
+        QSignalSpy finished(compare, &ComparePanel::finished);
+        QTest::mouseClick(compare->runButton(), Qt::LeftButton);
+        QVERIFY(compare->isRunning());
+        QVERIFY(finished.wait(120000));
+        QVERIFY(compare->chart().has_value());
+        QCOMPARE(compare->chart()->axes.back(), CostAxis::GpuTime);
+        const QString status = compare->statusText();
+        QVERIFY2(status.contains("the editor's OpenGL context (shared with the viewports)"),
+                 qPrintable(status));
+        QVERIFY2(status.contains(probeOpenGl().renderer), qPrintable(status));
     }
 
     void ctrlDragMovesTheLightOfLinkedViews() {

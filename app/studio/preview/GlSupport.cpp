@@ -14,7 +14,8 @@ bool GlProbe::software() const {
            renderer.contains(QLatin1String("swrast"));
 }
 
-void setDefaultSurfaceFormat() {
+void setUpOpenGl() {
+    QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
     QSurfaceFormat format;
     format.setRenderableType(QSurfaceFormat::OpenGL);
     format.setVersion(kRequiredGlMajor, kRequiredGlMinor);

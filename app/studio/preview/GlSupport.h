@@ -20,9 +20,10 @@ struct GlProbe {
     bool software() const; // llvmpipe, softpipe, swrast
 };
 
-// Sets the default surface format the preview asks for (4.3 core, depth, sRGB-capable).
-// Must run before QApplication is constructed.
-void setDefaultSurfaceFormat();
+// Sets the default surface format the preview asks for (4.3 core, depth, sRGB-capable) and makes
+// every context share with Qt's global one (the Compare panel times on a context shared with the
+// viewports': jobs/EditorGpuTimer.h). Must run before QApplication is constructed.
+void setUpOpenGl();
 
 // Probes once (cached): creates a context of the default format on an offscreen surface and
 // reads its version. Needs a QGuiApplication.

@@ -1,31 +1,43 @@
-#include "parallax/render/HeadlessBenchTimer.h"
+#include "parallax/render/GpuBenchTimer.h"
 
 #include "parallax/render/GpuTracer.h"
 #include "parallax/render/HeadlessContext.h"
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace px {
 
-Result<std::unique_ptr<HeadlessBenchTimer>>
-HeadlessBenchTimer::create(const HeadlessBenchOptions& options) {
+Result<BenchContext> headlessBenchContext() {
     Result<std::unique_ptr<HeadlessContext>> context = HeadlessContext::create();
     if (!context)
+        return context.error();
+    std::shared_ptr<HeadlessContext> held(std::move(*context));
+    return BenchContext{held, "headless " + held->platform()};
+}
+
+Result<std::unique_ptr<GpuBenchTimer>>
+GpuBenchTimer::create(const GpuBenchOptions& options, const BenchContextFactory& makeContext) {
+    Result<BenchContext> context = makeContext();
+    if (!context)
         return Error{"no GPU timing: " + context.error().message};
-    std::unique_ptr<HeadlessBenchTimer> timer(new HeadlessBenchTimer);
+    std::unique_ptr<GpuBenchTimer> timer(new GpuBenchTimer);
     timer->m_context = std::move(*context);
     timer->m_options = options;
-    const GlInfo& gl = timer->m_context->info();
-    timer->m_label = gl.renderer + (gl.software() ? " [software rasteriser: CPU time]" : "");
+    const GlInfo gl = currentGlInfo();
+    if (Status ok = requireGl43(gl); !ok)
+        return Error{"no GPU timing: " + ok.error().message};
+    timer->m_label = gl.renderer + (gl.software() ? " [software rasteriser: CPU time]" : "") +
+                     ", " + timer->m_context.name;
     if (gl.software() && options.softwareRays > 0)
         timer->m_options.rays = options.softwareRays;
     return timer;
 }
 
-HeadlessBenchTimer::~HeadlessBenchTimer() = default;
+GpuBenchTimer::~GpuBenchTimer() = default;
 
-Result<GpuFrameTiming> HeadlessBenchTimer::time(const GpuFrameRequest& r) {
+Result<GpuFrameTiming> GpuBenchTimer::time(const GpuFrameRequest& r) {
     const double frameRays = double(r.width) * r.height;
     TraceScene scene;
     scene.rays =
@@ -64,18 +76,20 @@ Result<GpuFrameTiming> HeadlessBenchTimer::time(const GpuFrameRequest& r) {
     return result;
 }
 
-GpuFrameTimer lazyHeadlessBenchTimer(const HeadlessBenchOptions& options) {
+GpuFrameTimer lazyGpuBenchTimer(const GpuBenchOptions& options, BenchContextFactory makeContext) {
     struct Lazy {
-        HeadlessBenchOptions options;
-        std::unique_ptr<HeadlessBenchTimer> timer;
+        GpuBenchOptions options;
+        BenchContextFactory makeContext;
+        std::unique_ptr<GpuBenchTimer> timer;
         std::optional<Error> failed;
     };
     auto lazy = std::make_shared<Lazy>();
     lazy->options = options;
+    lazy->makeContext = std::move(makeContext);
     return [lazy](const GpuFrameRequest& r) -> Result<GpuFrameTiming> {
         if (!lazy->timer && !lazy->failed) {
-            Result<std::unique_ptr<HeadlessBenchTimer>> made =
-                HeadlessBenchTimer::create(lazy->options);
+            Result<std::unique_ptr<GpuBenchTimer>> made =
+                GpuBenchTimer::create(lazy->options, lazy->makeContext);
             if (made)
                 lazy->timer = std::move(*made);
             else
