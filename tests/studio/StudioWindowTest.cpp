@@ -20,6 +20,7 @@
 #include <QComboBox>
 #include <QMessageBox>
 #include <QOpenGLContext>
+#include <QPainter>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -60,6 +61,39 @@ std::string writeRamp(const QTemporaryDir& dir, const char* name, int size) {
             image.at(x, y) = float((x + y) % 8) / 7.0f;
     const std::string path = dir.filePath(name).toStdString();
     return writeImage(path, image, {PixelFormat::UInt16, false}) ? path : std::string();
+}
+
+// Correlation of the heat legend's labels in `grab` with the labels drawn upright (or mirrored
+// top to bottom) in white on black with the preview's font, where PreviewWidget puts them.
+double legendLabelMatch(const PreviewWidget* preview, const QImage& grab, bool mirrored) {
+    const QFontMetrics fm(preview->font());
+    const int h = fm.height();
+    const QRect bar(h / 2, preview->height() - 2 * h, 8 * h, h / 2);
+    const QRect labels(bar.left(), bar.bottom() + 2, bar.width(), h);
+    QImage expected(labels.size(), QImage::Format_RGB32);
+    expected.fill(Qt::black);
+    QPainter p(&expected);
+    p.setFont(preview->font());
+    p.setPen(Qt::white);
+    const QRect local(QPoint(0, 0), labels.size());
+    p.drawText(local, Qt::AlignLeft, QStringLiteral("0"));
+    p.drawText(local, Qt::AlignHCenter, QStringLiteral("1"));
+    p.drawText(local, Qt::AlignRight, QStringLiteral("≥2 texels"));
+    p.end();
+    if (mirrored)
+        expected = expected.mirrored(false, true);
+    const QImage actual = grab.copy(labels).convertToFormat(QImage::Format_RGB32);
+    double sa = 0, se = 0, saa = 0, see = 0, sae = 0;
+    const double n = double(labels.width()) * labels.height();
+    for (int y = 0; y < labels.height(); ++y) {
+        for (int x = 0; x < labels.width(); ++x) {
+            const double a = qGray(actual.pixel(x, y)), e = qGray(expected.pixel(x, y));
+            sa += a, se += e, saa += a * a, see += e * e, sae += a * e;
+        }
+    }
+    const double cov = sae / n - sa / n * se / n;
+    const double va = saa / n - sa / n * sa / n, ve = see / n - se / n * se / n;
+    return va > 0 && ve > 0 ? cov / std::sqrt(va * ve) : 0.0;
 }
 
 } // namespace
@@ -298,6 +332,15 @@ private slots:
         QVERIFY(preview->scene().overlays.heatMap);
         QVERIFY(waitForFigures(preview));
         const QImage heat = preview->grabFramebuffer();
+        // The legend's labels read upright: the grab matches them as drawn (0.996 on llvmpipe;
+        // 0.52 when the GL paint engine's glyphs came out upside down after the renderer), and
+        // better than mirrored top to bottom.
+        const double upright = legendLabelMatch(preview, heat, false);
+        const double flipped = legendLabelMatch(preview, heat, true);
+        QVERIFY2(
+            upright > 0.9 && upright > flipped + 0.2,
+            qPrintable(
+                QStringLiteral("labels match %1 upright, %2 flipped").arg(upright).arg(flipped)));
         QVERIFY2(changedPixels(plain, heat) > plain.width() * plain.height() / 10,
                  qPrintable(QStringLiteral("%1 of %2 pixels changed; %3 pixels measured, error %4")
                                 .arg(changedPixels(plain, heat))

@@ -99,6 +99,9 @@ void PreviewWidget::resizeGL(int, int) {}
 
 void PreviewWidget::paintGL() {
     const QSize pixels = size() * devicePixelRatioF();
+    // The renderer's raw GL between begin/endNativePainting, as Qt asks of mixed painting.
+    QPainter painter(this);
+    painter.beginNativePainting();
     if (m_renderer) {
         Result<double> frameMs = m_renderer->draw(m_scene, pixels, defaultFramebufferObject());
         if (!frameMs) {
@@ -111,16 +114,37 @@ void PreviewWidget::paintGL() {
         if (!m_measured && !m_measureTimer->isActive())
             m_measureTimer->start();
     }
+    painter.endNativePainting();
 
-    QPainter painter(this);
-    if (m_renderer && m_scene.overlays.heatMap && m_stats.valid) {
+    const bool heatMap = m_renderer && m_scene.overlays.heatMap && m_stats.valid;
+    if (heatMap) {
         const QImage heat = m_renderer->heatMap();
         if (!heat.isNull()) {
             painter.setRenderHint(QPainter::SmoothPixmapTransform, false);
             painter.drawImage(rect(), heat);
         }
     }
-    if (m_renderer && m_scene.overlays.heatMap && m_stats.valid)
+    const bool message = !m_renderError.isEmpty() || !m_scene.traceable;
+    if (heatMap || m_scene.overlays.wipe || message) {
+        // Text drawn by the GL paint engine after the renderer's GL came out upside down (its
+        // glyph cache, on Mesa at scales 1 and 2); drawn by the raster engine into an image and
+        // composited as one, it is upright on every driver.
+        QImage overlay(pixels, QImage::Format_ARGB32_Premultiplied);
+        overlay.setDevicePixelRatio(devicePixelRatioF());
+        overlay.fill(Qt::transparent);
+        QPainter text(&overlay);
+        drawOverlays(text, heatMap, message);
+        text.end();
+        painter.drawImage(QPointF(0, 0), overlay);
+    }
+    painter.end();
+    emit frameRendered();
+    emit statsChanged(); // the frame time
+}
+
+void PreviewWidget::drawOverlays(QPainter& painter, bool heatMap, bool message) {
+    painter.setFont(font());
+    if (heatMap)
         drawHeatLegend(painter);
     if (m_scene.overlays.wipe) {
         const double x = m_scene.overlays.wipePosition * width();
@@ -132,7 +156,7 @@ void PreviewWidget::paintGL() {
         painter.drawText(QRectF(0, 4, x - 6, 20), Qt::AlignRight, a);
         painter.drawText(QRectF(x + 6, 4, width() - x - 6, 20), Qt::AlignLeft, b);
     }
-    if (!m_renderError.isEmpty() || !m_scene.traceable) {
+    if (message) {
         painter.fillRect(rect(), QColor(0, 0, 0, 160));
         painter.setPen(Qt::white);
         const QString text =
@@ -143,9 +167,6 @@ void PreviewWidget::paintGL() {
         painter.drawText(rect().adjusted(10, 10, -10, -10), Qt::AlignCenter | Qt::TextWordWrap,
                          text);
     }
-    painter.end();
-    emit frameRendered();
-    emit statsChanged(); // the frame time
 }
 
 void PreviewWidget::drawHeatLegend(QPainter& painter) {

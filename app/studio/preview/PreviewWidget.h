@@ -58,6 +58,7 @@ private:
     // The figures against the exact intersection need two extra passes: taken once the scene
     // has stayed still for a moment, not on every frame of a drag.
     void measure();
+    void drawOverlays(class QPainter& painter, bool heatMap, bool message);
     void drawHeatLegend(class QPainter& painter);
 
     PreviewScene m_scene;
