@@ -246,7 +246,12 @@ private slots:
         QVERIFY(w->baker()->isBusy());
         QVERIFY(w->mapsPanel()->cancelButton()->isEnabled());
         QTest::mouseClick(w->mapsPanel()->cancelButton(), Qt::LeftButton);
+        // Said at once, and the button cannot be pressed again while the bake stops.
+        QVERIFY2(w->mapsPanel()->bakeStatus().startsWith("Cancelling the relaxed cone"),
+                 qPrintable(w->mapsPanel()->bakeStatus()));
+        QVERIFY(!w->mapsPanel()->cancelButton()->isEnabled());
         QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 60000);
+        QVERIFY(w->mapsPanel()->bakeStatus().contains("cancelled"));
         QVERIFY(!w->document()->state().hasMap(MapKind::RelaxedCone));
         QCOMPARE(w->document()->undoStack()->count(), steps);
         QVERIFY(w->lastProblem().isEmpty());

@@ -80,8 +80,8 @@ void BakeRunner::start(const BakeRequest& request) {
 
 void BakeRunner::cancel() {
     m_queue.clear();
-    if (m_cancel)
-        m_cancel->store(true);
+    if (m_cancel && m_runningRequest && !m_cancel->exchange(true))
+        emit cancelling(m_runningRequest->kind);
 }
 
 void BakeRunner::next() {

@@ -50,6 +50,8 @@ public:
 
 signals:
     void started(px::studio::BakeKind kind);
+    // A cancel was asked for while `kind` was baking; finished() follows once it has stopped.
+    void cancelling(px::studio::BakeKind kind);
     void progress(px::studio::BakeKind kind, double fraction);
     void finished(const px::studio::BakeOutcome& outcome);
     void idle();

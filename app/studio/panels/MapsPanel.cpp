@@ -69,6 +69,10 @@ MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* par
         m_cancel->setEnabled(true);
         refresh();
     });
+    connect(m_baker, &BakeRunner::cancelling, this, [this](BakeKind kind) {
+        m_bakeLabel->setText(tr("Cancelling the %1 bake…").arg(bakeTitle(kind)));
+        m_cancel->setEnabled(false);
+    });
     connect(m_baker, &BakeRunner::progress, this,
             [this](BakeKind, double f) { m_progress->setValue(static_cast<int>(f * 100)); });
     connect(m_baker, &BakeRunner::finished, this, [this](const BakeOutcome& outcome) {
@@ -87,6 +91,10 @@ MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* par
     });
     connect(document, &MaterialDocument::changed, this, &MapsPanel::refresh);
     refresh();
+}
+
+QString MapsPanel::bakeStatus() const {
+    return m_bakeLabel->text();
 }
 
 NormalFilter MapsPanel::normalFilter() const {

@@ -26,6 +26,7 @@ public:
     MapRow* row(MapKind kind) const { return m_rows.at(kind); }
     QProgressBar* progressBar() const { return m_progress; }
     QPushButton* cancelButton() const { return m_cancel; }
+    QString bakeStatus() const;
     NormalFilter normalFilter() const;
 
 signals:

@@ -80,7 +80,7 @@ std::uint8_t sectorsOf(int x0, int x1, int y0, int y1, const CellGrid& g) {
     return kArcs.fill[corners];
 }
 
-SectorPyramid::SectorPyramid(const CellGrid& g, float heightMax)
+SectorPyramid::SectorPyramid(const CellGrid& g, float heightMax, BakeProgress* progress)
     : m_scale(heightMax > 0.0f ? heightMax / 65535.0f : 0.0f) {
     m_width.push_back(g.cellsX);
     m_height.push_back(g.cellsY);
@@ -89,6 +89,8 @@ SectorPyramid::SectorPyramid(const CellGrid& g, float heightMax)
     tbb::parallel_for(
         tbb::blocked_range<int>(0, g.cellsY, 16), [&](const tbb::blocked_range<int>& rows) {
             for (int y = rows.begin(); y < rows.end(); ++y) {
+                if (progress && progress->stopRequested())
+                    return;
                 for (int x = 0; x < g.cellsX; ++x) {
                     const Corners k = cellCorners(g, x, y);
                     // The gradient (per uv) over the cell ranges over a box: d h / d x is linear in
@@ -105,10 +107,13 @@ SectorPyramid::SectorPyramid(const CellGrid& g, float heightMax)
                     }
                     m_flags[static_cast<std::size_t>(y) * g.cellsX + x] = bits;
                 }
+                if (progress)
+                    progress->advance(1);
             }
         });
     m_levels.emplace_back();
-    while (m_width.back() > 1 || m_height.back() > 1) {
+    auto stopped = [progress] { return progress && progress->stopRequested(); };
+    while ((m_width.back() > 1 || m_height.back() > 1) && !stopped()) {
         const int child = static_cast<int>(m_width.size()) - 1;
         const int cw = m_width.back(), ch = m_height.back();
         const int w = (cw + 1) / 2, h = (ch + 1) / 2;
@@ -116,6 +121,8 @@ SectorPyramid::SectorPyramid(const CellGrid& g, float heightMax)
         tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>&
                                                                     rows) {
             for (int y = rows.begin(); y < rows.end(); ++y) {
+                if (stopped())
+                    return;
                 for (int x = 0; x < w; ++x) {
                     std::uint16_t* out = &values[(static_cast<std::size_t>(y) * w + x) * 8];
                     for (int j = 0; j < 2; ++j) {

@@ -7,6 +7,7 @@
 // Levels 1+ keep, per node and sector, the highest such cell, rounded up to 16 bits of the map's
 // maximum: about 1.6 bytes per texel for the flags and 5.3 for the maxima.
 
+#include "bake/BakeProgress.h"
 #include "bake/ConeCells.h"
 
 #include <cstdint>
@@ -16,7 +17,9 @@ namespace px::cone {
 
 class SectorPyramid {
 public:
-    SectorPyramid(const CellGrid& grid, float heightMax);
+    // With `progress`, reports a unit of work per cell row of level 0 and stops early,
+    // incomplete, once the bake is cancelled: the caller checks before using it.
+    SectorPyramid(const CellGrid& grid, float heightMax, BakeProgress* progress = nullptr);
 
     int levels() const { return static_cast<int>(m_width.size()); }
     int width(int level) const { return m_width[level]; }

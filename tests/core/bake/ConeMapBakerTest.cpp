@@ -7,6 +7,10 @@
 #include "parallax/bake/ConeMapReference.h"
 #include "parallax/sample/ProceduralMaps.h"
 
+// TBB before Qt: Qt's `emit` macro breaks tbb/profiling.h.
+// clang-format off
+#include <tbb/task_arena.h>
+// clang-format on
 #include <QtTest>
 #include <atomic>
 #include <cmath>
@@ -54,6 +58,7 @@ private slots:
     void quantisationRoundsDown();
     void bakeConeMapPostProcesses();
     void cancelsAndReportsProgress();
+    void relaxedConeStopsWithinATileRow();
     void rejectsEmptyField();
 };
 
@@ -269,6 +274,40 @@ void ConeMapBakerTest::cancelsAndReportsProgress() {
         QVERIFY(!cancelled.ok());
         QVERIFY(isCancelled(cancelled.error()));
     }
+}
+
+// The relaxed-cone bake polls the cancel flag and reports progress per tile row (4 texel rows):
+// once cancelled, each thread finishes at most the row it is in. Measured in work, not time: the
+// progress reported after the request grows by at most one row per thread (plus a report step).
+void ConeMapBakerTest::relaxedConeStopsWithinATileRow() {
+    // Tall and narrow: many cheap tile rows, as an 8192² map has (TBB's ranges grow with them).
+    const HeightField field = makeProceduralMap(ProceduralMap::Noise, 32, 4096);
+    // Work as the baker counts it: a cell row of the set-up 1, a tile row 200.
+    const double row = 200.0 / (4096 + 1024 * 200);
+    std::atomic<bool> stop{false};
+    float requestedAt = -1.0f, last = 0.0f;
+    int reports = 0;
+    BakeControl control;
+    control.cancel = &stop;
+    control.progress = [&](float p) {
+        ++reports;
+        last = p;
+        if (p >= 0.1f && requestedAt < 0.0f) {
+            requestedAt = p;
+            stop = true;
+        }
+    };
+    const Result<ConeMap> cancelled = bakeRelaxedConeMap(field, WrapMode::Repeat, control);
+    QVERIFY(!cancelled.ok() && isCancelled(cancelled.error()));
+    QVERIFY(requestedAt >= 0.1f);
+    // Reports from the first tenth: every few rows, not once per TBB range.
+    QVERIFY2(reports >= 5, qPrintable(QString::number(reports)));
+    const int threads = tbb::this_task_arena::max_concurrency();
+    const double bound = requestedAt + (threads + 1) * row + 1.0 / 200;
+    QVERIFY2(last <= bound, qPrintable(QStringLiteral("requested at %1, reached %2, bound %3")
+                                           .arg(requestedAt)
+                                           .arg(last)
+                                           .arg(bound)));
 }
 
 void ConeMapBakerTest::rejectsEmptyField() {
