@@ -4,6 +4,7 @@
 
 #include "StudioOptions.h"
 #include "StudioTestSupport.h"
+#include "jobs/BackgroundLoad.h"
 #include "jobs/Baking.h"
 #include "model/SampleMaterial.h"
 #include "panels/ComparePanel.h"
@@ -15,6 +16,7 @@
 #include "panels/WorkPrecisionView.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/material/MaterialFile.h"
+#include "parallax/sample/ProceduralMaps.h"
 #include "preview/GlUnavailableDialog.h"
 #include "widgets/RangeSlider.h"
 #include "widgets/SliderField.h"
@@ -26,12 +28,14 @@
 #include <QComboBox>
 #include <QMenu>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
 #include <QTimer>
 #include <QToolButton>
+#include <future>
 
 using namespace px;
 using namespace px::studio;
@@ -55,6 +59,70 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QVERIFY(w.viewports()->viewport(0)->preview() == nullptr);
         QVERIFY(w.viewports()->viewport(0)->statsText().contains("pom"));
+    }
+
+    // A load runs on a worker while the GUI thread keeps handling events; past a quiet moment a
+    // window-modal dialog names the file, and Cancel returns at once with nothing loaded. The
+    // load is held by a promise the test keeps, so nothing here depends on how fast a machine is.
+    void loadsInTheBackgroundAndCancels() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        for (bool cancel : {false, true}) {
+            std::promise<void> release;
+            std::shared_future<void> released = release.get_future().share();
+            int ticks = 0;
+            QString shown;
+            QTimer poll;
+            connect(&poll, &QTimer::timeout, this, [&] {
+                ++ticks;
+                auto* dialog = w.findChild<QProgressDialog*>();
+                if (!dialog || !dialog->isVisible())
+                    return;
+                if (!shown.isEmpty())
+                    return; // acted on already
+                shown = dialog->labelText();
+                if (cancel)
+                    QTest::mouseClick(dialog->findChild<QPushButton*>(), Qt::LeftButton);
+                else
+                    release.set_value();
+            });
+            poll.start(10);
+            const Result<int> loaded = loadInBackground<int>(&w, "big.png", [released] {
+                released.wait();
+                return Result<int>(7);
+            });
+            poll.stop();
+            QVERIFY2(shown.startsWith("Loading big.png…"), qPrintable(shown));
+            QVERIFY(ticks > 1); // the GUI thread ran while the load was held
+            if (cancel) {
+                release.set_value(); // the worker ends on its own; its result is dropped
+                QVERIFY(!loaded.ok() && loaded.error().cancelled());
+            } else {
+                QVERIFY(loaded.ok() && *loaded == 7);
+            }
+            QTRY_VERIFY(!w.findChild<QProgressDialog*>());
+        }
+    }
+
+    // Loading a map from the window goes through the worker: events run during loadMap (on the
+    // GUI thread a 2048² decode ran with none).
+    void loadMapKeepsTheWindowAlive() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Bricks, 32);
+        const std::string file = m_dir.filePath("big_height.png").toStdString();
+        QVERIFY(writeImage(file, makeProceduralMap(ProceduralMap::Noise, 2048, 2048).toImage(),
+                           {PixelFormat::UInt16, false}));
+        int ticks = 0;
+        QTimer poll;
+        connect(&poll, &QTimer::timeout, this, [&] { ++ticks; });
+        poll.start(0);
+        QVERIFY(w.loadMap(MapKind::Height, QString::fromStdString(file)));
+        poll.stop();
+        QVERIFY(ticks > 0);
+        QCOMPARE(w.document()->state().assets->height.width, 2048);
     }
 
     void noGlMessageNamesBothVersions() {

@@ -1,5 +1,6 @@
 #include "panels/MaterialPanel.h"
 
+#include "jobs/BackgroundLoad.h"
 #include "model/MapLoading.h"
 #include "model/MaterialDocument.h"
 #include "parallax/bake/NormalMapBaker.h"
@@ -199,9 +200,12 @@ void MaterialPanel::rereadHeight(const QString& text, bool depth, int channel) {
     next.material.heightChannel =
         parseHeightChannel(heightChannelNames()[static_cast<std::size_t>(channel)])
             .value_or(HeightChannel::Red);
-    Result<Loaded> loaded = reloadHeight(next);
+    Result<Loaded> loaded = loadInBackground<Loaded>(window(), tr("the height map"),
+                                                     [next] { return reloadHeight(next); });
     if (!loaded) {
         refresh(); // show the settings as they still are
+        if (loaded.error().cancelled())
+            return;
         emit problem(QString::fromStdString(loaded.error().message));
         return;
     }

@@ -1,5 +1,6 @@
 // MainWindow: opening, saving and importing, by menu, dialog and drop.
 
+#include "jobs/BackgroundLoad.h"
 #include "model/MapLoading.h"
 #include "model/MaterialDocument.h"
 #include "model/MaterialSaver.h"
@@ -22,6 +23,18 @@
 #include <QStatusBar>
 
 namespace px::studio {
+
+namespace {
+
+// A cancelled load (BackgroundLoad.h) is no problem to report: nothing changed, and it says so.
+bool cancelledLoad(QStatusBar* bar, const Error& error) {
+    if (!error.cancelled())
+        return false;
+    bar->showMessage(QObject::tr("Loading cancelled; nothing changed."), 6000);
+    return true;
+}
+
+} // namespace
 
 namespace {
 
@@ -49,8 +62,12 @@ void MainWindow::newSample(ProceduralMap kind, int size) {
 bool MainWindow::openFile(const QString& path) {
     if (!maybeSave())
         return false;
-    Result<Loaded> loaded = openMaterialFile(path.toStdString());
+    Result<Loaded> loaded =
+        loadInBackground<Loaded>(this, QFileInfo(path).fileName(),
+                                 [file = path.toStdString()] { return openMaterialFile(file); });
     if (!loaded) {
+        if (cancelledLoad(statusBar(), loaded.error()))
+            return false;
         showProblem(tr("Cannot open the material"), QString::fromStdString(loaded.error().message));
         return false;
     }
@@ -130,8 +147,13 @@ bool MainWindow::loadMap(MapKind kind, const QString& path, bool depth) {
         const std::optional<SuffixMatch> match = mapKindFromFileName(path.toStdString());
         depth = match && match->depth;
     }
-    Result<Loaded> loaded = loadMapFile(m_document->state(), kind, path.toStdString(), depth);
+    Result<Loaded> loaded =
+        loadInBackground<Loaded>(this, QFileInfo(path).fileName(),
+                                 [state = m_document->state(), kind, file = path.toStdString(),
+                                  depth] { return loadMapFile(state, kind, file, depth); });
     if (!loaded) {
+        if (cancelledLoad(statusBar(), loaded.error()))
+            return false;
         showProblem(
             tr("Cannot load the %1 map").arg(QString::fromUtf8(mapTitle(kind).data()).toLower()),
             QString::fromStdString(loaded.error().message));
@@ -196,8 +218,14 @@ bool MainWindow::importSet(const std::vector<std::string>& files, const QString&
     }
     // Files without a height map are not a material of their own: they add to this one.
     if (!plan->find(MapKind::Height)) {
-        Result<Loaded> loaded = loadMaps(m_document->state(), plan->assigned);
+        Result<Loaded> loaded = loadInBackground<Loaded>(
+            this, tr("%n map(s)", nullptr, static_cast<int>(plan->assigned.size())),
+            [state = m_document->state(), files = plan->assigned] {
+                return loadMaps(state, files);
+            });
         if (!loaded) {
+            if (cancelledLoad(statusBar(), loaded.error()))
+                return false;
             showProblem(tr("Cannot import the maps"),
                         QString::fromStdString(loaded.error().message));
             return false;
@@ -209,8 +237,11 @@ bool MainWindow::importSet(const std::vector<std::string>& files, const QString&
     }
     if (!maybeSave())
         return false;
-    Result<ImportedSet> imported = importTextureSet(*plan);
+    Result<ImportedSet> imported = loadInBackground<ImportedSet>(
+        this, QString::fromStdString(plan->name), [set = *plan] { return importTextureSet(set); });
     if (!imported) {
+        if (cancelledLoad(statusBar(), imported.error()))
+            return false;
         showProblem(tr("Cannot import the texture set"),
                     QString::fromStdString(imported.error().message));
         return false;

@@ -1,0 +1,53 @@
+#include "jobs/BackgroundLoad.h"
+
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QProgressDialog>
+#include <QTimer>
+
+namespace px::studio {
+
+namespace {
+constexpr int kQuietMs = 300; // a load this short shows no dialog
+}
+
+bool waitForLoad(QWidget* window, const QString& what, QFutureWatcherBase& watcher) {
+    QEventLoop loop;
+    QObject::connect(&watcher, &QFutureWatcherBase::finished, &loop, &QEventLoop::quit);
+    if (watcher.isFinished())
+        return false;
+    // First a quiet moment: paint, but hold user input (nothing may edit the document the load
+    // will replace).
+    QTimer::singleShot(kQuietMs, &loop, &QEventLoop::quit);
+    loop.exec(QEventLoop::ExcludeUserInputEvents);
+    if (watcher.isFinished())
+        return false;
+
+    QProgressDialog dialog(window);
+    dialog.setWindowModality(Qt::WindowModal);
+    dialog.setWindowTitle(QObject::tr("Loading"));
+    dialog.setRange(0, 0); // busy: decoders report no progress
+    dialog.setMinimumDuration(0);
+    QElapsedTimer clock;
+    clock.start();
+    auto label = [&] {
+        dialog.setLabelText(QObject::tr("Loading %1… %2 s")
+                                .arg(what)
+                                .arg((clock.elapsed() + kQuietMs) / 1000.0, 0, 'f', 1));
+    };
+    label();
+    QTimer tick;
+    QObject::connect(&tick, &QTimer::timeout, &dialog, label);
+    tick.start(100);
+    bool cancelled = false;
+    QObject::connect(&dialog, &QProgressDialog::canceled, &loop, [&] {
+        cancelled = true;
+        loop.quit();
+    });
+    dialog.show();
+    if (!watcher.isFinished())
+        loop.exec();
+    return cancelled && !watcher.isFinished();
+}
+
+} // namespace px::studio
