@@ -14,12 +14,14 @@
 #include "panels/MaterialPanel.h"
 #include "panels/TechniquePanel.h"
 #include "panels/WorkPrecisionView.h"
+#include "parallax/eval/AutoTechnique.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/sample/ProceduralMaps.h"
 #include "preview/GlUnavailableDialog.h"
 #include "widgets/RangeSlider.h"
 #include "widgets/SliderField.h"
+#include "widgets/TechniqueCombo.h"
 #include "window/RecentFiles.h"
 
 #include <QAbstractButton>
@@ -123,6 +125,48 @@ private slots:
         poll.stop();
         QVERIFY(ticks > 0);
         QCOMPARE(w.document()->state().assets->height.width, 2048);
+    }
+
+    // Auto in the editor: Pick measures on the material's height map, makes the choice the
+    // material's (still "auto", with the fields' budget and angle), says what it chose; the same
+    // inputs resolved directly give the same setting. A technique chosen by hand ends auto.
+    void autoPicksTheCheapestAndAHandChoiceEndsIt() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Bricks, 48);
+        TechniquePanel* panel = w.techniquePanel();
+        panel->setViewport(0);
+        QVERIFY(panel->autoStatus().contains("by hand"));
+        panel->autoBudget()->setValue(0.25);
+        panel->autoMaxPolar()->setValue(70.0);
+        panel->autoPick()->click();
+        const Material m = w.document()->material();
+        QVERIFY2(m.autoQuality.has_value(), qPrintable(panel->autoStatus()));
+        QCOMPARE(m.autoQuality->budget, 0.25f);
+        QCOMPARE(m.autoQuality->maxPolar, 70.0f);
+
+        Material asked = m;
+        asked.technique = Technique::Pom;
+        asked.params = info(Technique::Pom).defaults;
+        const MaterialAssets& a = *w.document()->state().assets;
+        const Result<ResolvedAuto> direct =
+            resolveAutoTechnique(asked, a.height, a.cone, a.relaxedCone, "direct");
+        QVERIFY(direct.ok());
+        QCOMPARE(m.technique, direct->material.technique);
+        QCOMPARE(m.params.minLayers, direct->material.params.minLayers);
+        QCOMPARE(m.params.maxLayers, direct->material.params.maxLayers);
+        QCOMPARE(m.params.binarySteps, direct->material.params.binarySteps);
+        QCOMPARE(m.params.maxSteps, direct->material.params.maxSteps);
+        const QString name = QString::fromUtf8(info(m.technique).name.data());
+        QVERIFY2(panel->autoStatus().contains(name), qPrintable(panel->autoStatus()));
+
+        // By hand: the combo's choice replaces auto.
+        const Technique other =
+            m.technique == Technique::Relief ? Technique::Pom : Technique::Relief;
+        emit panel->techniqueCombo()->techniqueChosen(other);
+        QCOMPARE(w.document()->material().technique, other);
+        QVERIFY(!w.document()->material().autoQuality);
+        QVERIFY(panel->autoStatus().contains("by hand"));
     }
 
     void noGlMessageNamesBothVersions() {

@@ -11,7 +11,7 @@ namespace {
 constexpr int kQuietMs = 300; // a load this short shows no dialog
 }
 
-bool waitForLoad(QWidget* window, const QString& what, QFutureWatcherBase& watcher) {
+bool waitForWork(QWidget* window, const QString& label, QFutureWatcherBase& watcher) {
     QEventLoop loop;
     QObject::connect(&watcher, &QFutureWatcherBase::finished, &loop, &QEventLoop::quit);
     if (watcher.isFinished())
@@ -25,19 +25,18 @@ bool waitForLoad(QWidget* window, const QString& what, QFutureWatcherBase& watch
 
     QProgressDialog dialog(window);
     dialog.setWindowModality(Qt::WindowModal);
-    dialog.setWindowTitle(QObject::tr("Loading"));
+    dialog.setWindowTitle(QObject::tr("Working"));
     dialog.setRange(0, 0); // busy: decoders report no progress
     dialog.setMinimumDuration(0);
     QElapsedTimer clock;
     clock.start();
-    auto label = [&] {
-        dialog.setLabelText(QObject::tr("Loading %1… %2 s")
-                                .arg(what)
-                                .arg((clock.elapsed() + kQuietMs) / 1000.0, 0, 'f', 1));
+    auto showTime = [&] {
+        dialog.setLabelText(QObject::tr("%1 %2 s").arg(label).arg(
+            (clock.elapsed() + kQuietMs) / 1000.0, 0, 'f', 1));
     };
-    label();
+    showTime();
     QTimer tick;
-    QObject::connect(&tick, &QTimer::timeout, &dialog, label);
+    QObject::connect(&tick, &QTimer::timeout, &dialog, showTime);
     tick.start(100);
     bool cancelled = false;
     QObject::connect(&dialog, &QProgressDialog::canceled, &loop, [&] {

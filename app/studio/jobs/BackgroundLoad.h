@@ -9,6 +9,7 @@
 #include "parallax/Result.h"
 
 #include <QFutureWatcher>
+#include <QObject>
 #include <QString>
 #include <QtConcurrent/QtConcurrentRun>
 #include <functional>
@@ -17,16 +18,24 @@ class QWidget;
 
 namespace px::studio {
 
-// Spins the GUI thread's events until `watcher` finishes or Cancel is pressed (returns true).
-bool waitForLoad(QWidget* window, const QString& what, QFutureWatcherBase& watcher);
+// Spins the GUI thread's events until `watcher` finishes or Cancel is pressed (returns true);
+// the dialog says `label` ("Loading bricks.png…") and the seconds so far.
+bool waitForWork(QWidget* window, const QString& label, QFutureWatcherBase& watcher);
 
+// Any such work (the editor's Auto measurement too); Cancel gives a cancelled error.
 template <typename T>
-Result<T> loadInBackground(QWidget* window, const QString& what, std::function<Result<T>()> work) {
+Result<T> runInBackground(QWidget* window, const QString& label, std::function<Result<T>()> work) {
     QFutureWatcher<Result<T>> watcher;
     watcher.setFuture(QtConcurrent::run(std::move(work)));
-    if (waitForLoad(window, what, watcher))
-        return Error{"loading " + what.toStdString() + " was cancelled", ErrorKind::Cancelled, {}};
+    if (waitForWork(window, label, watcher))
+        return Error{label.toStdString() + " cancelled", ErrorKind::Cancelled, {}};
     return watcher.result();
+}
+
+// `what`: the file's name, or what is loaded ("3 maps").
+template <typename T>
+Result<T> loadInBackground(QWidget* window, const QString& what, std::function<Result<T>()> work) {
+    return runInBackground<T>(window, QObject::tr("Loading %1…").arg(what), std::move(work));
 }
 
 } // namespace px::studio

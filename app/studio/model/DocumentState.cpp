@@ -31,8 +31,11 @@ ViewQuality DocumentState::view(int index) const {
 
 void DocumentState::setView(int index, const ViewQuality& quality) {
     if (index <= 0) {
+        // A technique or quality set by hand replaces "auto" (TechniquePanel sets auto's choice
+        // on the material directly).
         material.technique = quality.technique;
         material.params = quality.params;
+        material.autoQuality.reset();
     } else if (index < kMaxViewports) {
         views[static_cast<std::size_t>(index)] = quality;
     }

@@ -1,6 +1,8 @@
 #include "panels/TechniquePanel.h"
 
+#include "jobs/BackgroundLoad.h"
 #include "model/MaterialDocument.h"
+#include "parallax/eval/AutoTechnique.h"
 #include "widgets/Hints.h"
 #include "widgets/RangeSlider.h"
 #include "widgets/SliderField.h"
@@ -90,6 +92,37 @@ TechniquePanel::TechniquePanel(MaterialDocument* document, QWidget* parent)
         layout->addWidget(w);
     layout->addLayout(buttons);
 
+    // Auto (the material's technique only): the cheapest setting meeting an error budget over
+    // the view range, measured on this height map (parallax/eval/AutoTechnique.h), as render and
+    // export resolve a material file's "auto".
+    m_autoBox = new QGroupBox(tr("Auto: the cheapest setting within a budget"), this);
+    auto* autoForm = new QFormLayout(m_autoBox);
+    m_autoBudget = new QDoubleSpinBox(m_autoBox);
+    m_autoBudget->setRange(0.01, 100.0);
+    m_autoBudget->setDecimals(2);
+    m_autoBudget->setSingleStep(0.05);
+    m_autoBudget->setValue(0.5);
+    m_autoBudget->setSuffix(tr(" texel"));
+    m_autoBudget->setToolTip(tr("The error allowed: p99 of the hits' distance from the exact "
+                                "intersection, in texels, at every view angle up to the maximum."));
+    m_autoPolar = new QDoubleSpinBox(m_autoBox);
+    m_autoPolar->setRange(1.0, 89.0);
+    m_autoPolar->setDecimals(1);
+    m_autoPolar->setValue(80.0);
+    m_autoPolar->setSuffix(QStringLiteral("°"));
+    m_autoPolar->setToolTip(tr("The steepest view of the scene, from the surface's normal."));
+    m_autoPick = new QPushButton(tr("Pick"), m_autoBox);
+    m_autoPick->setToolTip(tr("Measure the techniques on this height map and make the cheapest "
+                              "one meeting the budget the material's (saved as \"auto\")."));
+    m_autoStatus = new QLabel(m_autoBox);
+    m_autoStatus->setWordWrap(true);
+    autoForm->addRow(tr("Budget"), m_autoBudget);
+    autoForm->addRow(tr("Up to"), m_autoPolar);
+    autoForm->addRow(m_autoPick);
+    autoForm->addRow(m_autoStatus);
+    layout->addWidget(m_autoBox);
+    connect(m_autoPick, &QPushButton::clicked, this, &TechniquePanel::pickAuto);
+
     connect(m_technique, &TechniqueCombo::techniqueChosen, this, [this](Technique t) {
         editQuality(tr("Technique %1").arg(QString::fromUtf8(info(t).name.data())), {},
                     [t](ViewQuality& q) {
@@ -139,6 +172,44 @@ TechniquePanel::TechniquePanel(MaterialDocument* document, QWidget* parent)
 
     connect(document, &MaterialDocument::changed, this, &TechniquePanel::refresh);
     refresh();
+}
+
+void TechniquePanel::pickAuto() {
+    const DocumentState& s = m_document->state();
+    if (!s.hasMap(MapKind::Height)) {
+        m_autoStatus->setText(tr("Load a height map first."));
+        return;
+    }
+    Material material = s.material;
+    AutoQuality quality;
+    quality.budget = static_cast<float>(m_autoBudget->value());
+    quality.maxPolar = static_cast<float>(m_autoPolar->value());
+    material.autoQuality = quality;
+    const std::shared_ptr<const MaterialAssets> assets = s.assets;
+    const std::string source = material.name.empty() ? "the height map" : material.name;
+    Result<ResolvedAuto> resolved = runInBackground<ResolvedAuto>(
+        window(), tr("Measuring the techniques…"), [material, assets, source] {
+            return resolveAutoTechnique(material, assets->height, assets->cone, assets->relaxedCone,
+                                        source);
+        });
+    if (!resolved) {
+        m_autoStatus->setText(resolved.error().cancelled()
+                                  ? tr("Cancelled; nothing changed.")
+                                  : QString::fromStdString(resolved.error().message));
+        return;
+    }
+    const Material chosen = resolved->material;
+    m_document->edit(tr("Auto technique"), [&](DocumentState& next) {
+        next.material.technique = chosen.technique;
+        next.material.params = chosen.params;
+        next.material.autoQuality = quality; // still auto: export measures its own maps again
+    });
+    m_autoNote = QString::fromStdString(resolved->note);
+    refresh();
+}
+
+QString TechniquePanel::autoStatus() const {
+    return m_autoStatus->text();
 }
 
 void TechniquePanel::setViewport(int index) {
@@ -194,6 +265,20 @@ void TechniquePanel::refresh() {
     m_secant->setVisible(t.usesSecantSteps);
     m_cap->setVisible(t.usesMaxSteps);
     m_useForMaterial->setVisible(m_viewport != 0);
+
+    m_autoBox->setVisible(m_viewport == 0);
+    const std::optional<AutoQuality>& a = s.material.autoQuality;
+    if (!a) {
+        m_autoNote.clear();
+        m_autoStatus->setText(tr("The technique is chosen by hand."));
+    } else {
+        const QSignalBlocker x(m_autoBudget), y(m_autoPolar);
+        m_autoBudget->setValue(a->budgetTexels());
+        m_autoPolar->setValue(a->maxPolar);
+        m_autoStatus->setText(m_autoNote.isEmpty()
+                                  ? tr("Auto, not measured here yet: Pick measures it.")
+                                  : m_autoNote);
+    }
 }
 
 } // namespace px::studio

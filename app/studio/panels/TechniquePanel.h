@@ -36,12 +36,17 @@ public:
     SliderField* binarySteps() const { return m_binary; }
     SliderField* secantSteps() const { return m_secant; }
     SliderField* stepCap() const { return m_cap; }
+    QDoubleSpinBox* autoBudget() const { return m_autoBudget; }
+    QDoubleSpinBox* autoMaxPolar() const { return m_autoPolar; }
+    QPushButton* autoPick() const { return m_autoPick; }
+    QString autoStatus() const;
 
 private:
     void refresh();
     void editQuality(const QString& text, const QString& key,
                      const std::function<void(ViewQuality&)>& change);
     void setQualityRange(double low, double high);
+    void pickAuto();
 
     MaterialDocument* m_document;
     int m_viewport = 0;
@@ -58,6 +63,12 @@ private:
     SliderField* m_cap;
     QPushButton* m_defaults;
     QPushButton* m_useForMaterial;
+    QGroupBox* m_autoBox;
+    QDoubleSpinBox* m_autoBudget;
+    QDoubleSpinBox* m_autoPolar;
+    QPushButton* m_autoPick;
+    QLabel* m_autoStatus;
+    QString m_autoNote; // the last resolution's note, while the material is still auto
 };
 
 // The tutorial shaders' quality (numSteps = clamp(quality * 50, 1, 50)) and layers.
