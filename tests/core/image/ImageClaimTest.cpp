@@ -45,6 +45,8 @@ private slots:
     }
     void hugeClaimsRefusedAtOnce_data();
     void hugeClaimsRefusedAtOnce();
+    void flatImagesPass_data();
+    void flatImagesPass();
 
 private:
     // A small real image of `extension`, written by the project's own writer.
@@ -139,6 +141,35 @@ void ImageClaimTest::hugeClaimsRefusedAtOnce() {
     // A refusal from the header reads nothing else: far under the seconds a 4 GB allocation
     // took. A hang guard, not a speed target.
     QVERIFY2(seconds < 2.0, qPrintable(QString::number(seconds)));
+}
+
+// The file-size bound must not refuse a real file: a flat image is the best case of every
+// compression, so each format's writer at its default compression stays within the bound.
+void ImageClaimTest::flatImagesPass_data() {
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<int>("format");
+    QTest::addColumn<int>("channels");
+    QTest::newRow("png 16-bit") << "f.png" << static_cast<int>(PixelFormat::UInt16) << 1;
+    QTest::newRow("png 8-bit rgba") << "f.png" << static_cast<int>(PixelFormat::UInt8) << 4;
+    QTest::newRow("tiff 16-bit") << "f.tif" << static_cast<int>(PixelFormat::UInt16) << 1;
+    QTest::newRow("exr float") << "f.exr" << static_cast<int>(PixelFormat::Float) << 1;
+    QTest::newRow("exr half rgba") << "f.exr" << static_cast<int>(PixelFormat::Half) << 4;
+    QTest::newRow("jpeg") << "f.jpg" << static_cast<int>(PixelFormat::UInt8) << 3;
+}
+
+void ImageClaimTest::flatImagesPass() {
+    QFETCH(QString, name);
+    QFETCH(int, format);
+    QFETCH(int, channels);
+    const std::string file = m_dir->filePath(name).toStdString();
+    ImageWriteOptions options;
+    options.format = static_cast<PixelFormat>(format);
+    const Image flat(2048, 2048, channels);
+    QVERIFY(writeImage(file, flat, options).ok());
+    const Result<Image> image = readImage(file);
+    QVERIFY2(image.ok(), image.ok() ? "" : image.error().message.c_str());
+    qInfo("%s: %lld bytes for %d channel(s) of 2048 x 2048", qPrintable(name),
+          static_cast<long long>(QFileInfo(QString::fromStdString(file)).size()), channels);
 }
 
 QTEST_GUILESS_MAIN(ImageClaimTest)
