@@ -16,7 +16,8 @@ find_package(nlohmann_json 3.10 CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(TBB CONFIG REQUIRED)
 find_package(Threads REQUIRED)
-# libpng: the tests decode exported PNGs the way engines do (gamma-aware).
+# libpng: the core checks a PNG's data with its own error handler; the tests decode exported PNGs
+# the way engines do (gamma-aware).
 find_package(PNG REQUIRED)
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Test Concurrent Svg)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)

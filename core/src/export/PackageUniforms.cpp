@@ -87,11 +87,12 @@ UniformValue uniformValue(const std::string& name, const Material& m, float heig
 const char* unitFormat(int unit) {
     switch (unit) {
     case TextureUnit::Height:
-        return "GL_R16 (GL_R32F for .exr), mipmapped (glGenerateMipmap); read with texelFetch, "
-               "so the filter does not matter; never 8-bit";
+        return "GL_R16 (GL_R32F for .exr), mipmapped (glGenerateMipmap), GL_LINEAR_MIPMAP_LINEAR, "
+               "magnification GL_LINEAR: the shader filters heights in hardware (textureGrad, "
+               "textureGather); never 8-bit";
     case TextureUnit::Cone:
-        return "GL_RG32F (R height, G sqrt(cone ratio)), one level, GL_NEAREST; read with "
-               "texelFetch";
+        return "GL_RG32F (R height, G sqrt(cone ratio)), one level, GL_LINEAR (the shader "
+               "filters it in hardware)";
     case TextureUnit::MaxMip:
         return "GL_R32F max-mip pyramid atlas built from the height map when loading "
                "(MaxMipPyramid::atlas()), one level, GL_NEAREST";
@@ -99,9 +100,11 @@ const char* unitFormat(int unit) {
         return "sRGB-encoded: GL_SRGB8_ALPHA8 (decoded to linear on sampling), mipmapped, "
                "GL_LINEAR_MIPMAP_LINEAR";
     case TextureUnit::Normal:
-        return "GL_RGBA8, linear (never sRGB), mipmapped, GL_LINEAR_MIPMAP_LINEAR";
+        return "GL_RGBA16 (GL_RGBA8 rounds every mip level to 8 bits, which moves specular "
+               "highlights by up to 10 of 255 steps), linear (never sRGB), mipmapped, "
+               "GL_LINEAR_MIPMAP_LINEAR";
     case TextureUnit::Orm:
-        return "GL_RGBA8, linear: occlusion (R), roughness (G), metallic (B), mipmapped, "
+        return "GL_RGBA16, linear: occlusion (R), roughness (G), metallic (B), mipmapped, "
                "GL_LINEAR_MIPMAP_LINEAR";
     default:
         return "";

@@ -98,12 +98,24 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
                                    std::to_string(spec.height) + ", larger than the limit of " +
                                    std::to_string(options.maxSide) + " texels a side");
 
-    ImageClaim claim{
-        spec.width,           spec.height,
-        spec.nchannels,       static_cast<std::int64_t>(spec.format.size()),
-        input->format_name(), static_cast<std::int64_t>(std::filesystem::file_size(path, ec))};
+    // Bits as stored: the channels' own formats (EXR mixes half and float), or fewer than 8 bits
+    // a sample where the format says so.
+    std::int64_t bitsPerTexel = 0;
+    for (int c = 0; c < spec.nchannels; ++c)
+        bitsPerTexel += static_cast<std::int64_t>(spec.channelformat(c).size()) * 8;
+    if (const int bits = spec.get_int_attribute("oiio:BitsPerSample"); bits > 0)
+        bitsPerTexel = static_cast<std::int64_t>(bits) * spec.nchannels;
+    ImageClaim claim{spec.width,
+                     spec.height,
+                     spec.nchannels,
+                     bitsPerTexel,
+                     input->format_name(),
+                     spec.get_string_attribute("compression"),
+                     static_cast<std::int64_t>(std::filesystem::file_size(path, ec))};
     if (Status fits = checkImageClaim(path, claim); !fits)
         return fits.error();
+    if (Status data = checkPngData(path); !data)
+        return data.error();
 
     try {
         Image image(spec.width, spec.height, spec.nchannels);
