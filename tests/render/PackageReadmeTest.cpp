@@ -332,8 +332,11 @@ void PackageReadmeTest::drawsFromTheReadmeAlone() {
     const int sizes[] = {3, 3, 2, 3, 3};
     for (GLuint location = 0; location < 5; ++location) {
         glEnableVertexAttribArray(location);
+        // GL takes a buffer offset as a pointer.
+        const auto* offset =
+            reinterpret_cast<const void*>(offsets[location]); // NOLINT(performance-no-int-to-ptr)
         glVertexAttribPointer(location, sizes[location], GL_FLOAT, GL_FALSE, sizeof(MeshVertex),
-                              reinterpret_cast<const void*>(offsets[location]));
+                              offset);
     }
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[1]);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,

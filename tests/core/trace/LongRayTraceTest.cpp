@@ -93,7 +93,9 @@ void LongRayTraceTest::exactMatchesADoubleWalk() {
                     const glm::dvec2 P(boundedParallax(scale, polar, azimuth));
                     const double texelsPerT = std::hypot(P.x * field.width, P.y * field.height);
                     for (int k = 0; k < 16; ++k) {
-                        const glm::dvec2 uv0((k % 4 + 0.5) / 4, (k / 4 + 0.5) / 4);
+                        const int column = k % 4;
+                        const int row = k / 4;
+                        const glm::dvec2 uv0((column + 0.5) / 4.0, (row + 0.5) / 4.0);
                         const TraceResult r = exact->trace(uv0, view);
                         const double t = test::doubleWalkT(field, wrap, uv0, P);
                         const double e = std::abs(r.t - t) * texelsPerT;
