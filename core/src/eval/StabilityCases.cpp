@@ -162,9 +162,9 @@ constexpr std::array kRules{
               "exact: every ray within 0.05 texel of exact (a march its step cap stops is finished "
               "by the exact cell walk)"},
     BoundRule{Technique::RelaxedCone,
-              "p99 within 0.05 texel (the last step's bracket and a capped march are solved "
-              "exactly); not every ray: at grazing views a step can pass through a needle or a "
-              "terrace's edge and out again (rays on another surface are counted)"},
+              "exact: every ray within 0.05 texel of exact (each step stays inside the relaxed "
+              "cones of a triangle of texels around the ray, so it cannot leave the solid; the "
+              "last step and a capped march are solved exactly)"},
     BoundRule{Technique::Pyramid, "exact: every ray within 0.05 texel of exact"},
     BoundRule{Technique::Exact, "the reference: within 0.001 texel of the closed forms"},
 };
@@ -230,10 +230,9 @@ ErrorBound boundFor(const CaseSpec& spec, Technique t, const TraceParams& params
                     " layers"};
     }
     case Technique::Cone:
+    case Technique::RelaxedCone:
     case Technique::Pyramid:
         return {BoundKind::MaxTexels, kExactTexels, "documented exact"};
-    case Technique::RelaxedCone:
-        return {BoundKind::P99Texels, kExactTexels, "p99; a step may pass through a needle"};
     case Technique::Exact:
         return {BoundKind::None, 0.0, "the reference itself"};
     case Technique::None:

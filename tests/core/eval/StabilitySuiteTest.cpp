@@ -96,7 +96,7 @@ void StabilitySuiteTest::fetchCaps() {
     QCOMPARE(fetchCap(Technique::Pom, p, cells), 33LL);
     QCOMPARE(fetchCap(Technique::Relief, p, cells), 39LL);
     QCOMPARE(fetchCap(Technique::Secant, p, cells), 36LL);
-    QCOMPARE(fetchCap(Technique::RelaxedCone, p, cells), 148LL);
+    QCOMPARE(fetchCap(Technique::RelaxedCone, p, cells), 124LL);
     QCOMPARE(fetchCap(Technique::Cone, p, cells), 124LL);
     QCOMPARE(fetchCap(Technique::Pyramid, p, cells), 148LL);
     QCOMPARE(fetchCap(Technique::Exact, p, cells), 24LL);
