@@ -169,6 +169,12 @@ constexpr std::array kRules{
     BoundRule{Technique::Exact, "the reference: within 0.001 texel of the closed forms"},
 };
 
+// As the kernel counts layers (pxLayerCount), rounded down: a conservative spacing.
+double layerCount(const TraceParams& params, const CaseGeometry& geometry) {
+    return std::max(1.0, std::floor(params.maxLayers +
+                                    (params.minLayers - params.maxLayers) * geometry.cosTheta));
+}
+
 std::string texels(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", value);
@@ -206,6 +212,13 @@ ErrorBound boundFor(const CaseSpec& spec, Technique t, const TraceParams& params
     }
     if (spec.scale == 0.0f)
         return {BoundKind::MaxDepth, 1e-6, "height scale 0: t = 1 - h(uv0) at one fetch"};
+    if (spec.reference == Reference::ClosedForm && t == Technique::Steep) {
+        // Steep returns the first layer at or below the surface, refined by nothing: on a
+        // constant surface that is within one layer, exact only where a layer falls on it.
+        const double spacing = geometry.rayTexels / layerCount(params, geometry);
+        return {BoundKind::MaxTexels, std::max(spacing, 1e-3),
+                "a constant surface, within one layer: " + texels(spacing) + " texels"};
+    }
     if (spec.reference == Reference::ClosedForm && t != Technique::Offset)
         return {BoundKind::MaxTexels, 1e-3, "a constant surface is found exactly"};
 
@@ -216,10 +229,7 @@ ErrorBound boundFor(const CaseSpec& spec, Technique t, const TraceParams& params
     case Technique::Pom:
     case Technique::Relief:
     case Technique::Secant: {
-        // As the kernel counts layers (pxLayerCount), rounded down: a conservative spacing.
-        const double layers =
-            std::max(1.0, std::floor(params.maxLayers +
-                                     (params.minLayers - params.maxLayers) * geometry.cosTheta));
+        const double layers = layerCount(params, geometry);
         const double spacing = geometry.rayTexels / layers;
         if (spacing > 0.5 * spec.featureTexels)
             return {BoundKind::None, 0.0,
