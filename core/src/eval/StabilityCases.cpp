@@ -68,6 +68,8 @@ void addAdversarial(std::vector<CaseSpec>& cases) {
          "smooth hills cut into 8-bit quantised terraces", Terraces, 64, 64},
         {"outliers", "adversarial-outliers", "adversarial-outliers-clamp",
          "gentle low noise with six single texels at the top", Outliers, 64, 64},
+        {"jpeg", "adversarial-jpeg", "adversarial-jpeg-clamp",
+         "ridged terrain with grain, 8 bits, through a JPEG codec at quality 75", Jpeg, 64, 64},
     };
     std::vector<View> views;
     for (double polar : {80.0, 87.0, 89.0}) {

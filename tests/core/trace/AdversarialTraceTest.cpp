@@ -45,6 +45,7 @@ constexpr Class kClasses[] = {
     {ProceduralMap::Treads, 48, 16},    {ProceduralMap::Pits, 32, 32},
     {ProceduralMap::Terraces, 32, 32},  {ProceduralMap::Outliers, 32, 32},
     {ProceduralMap::Checker, 16, 16},   {ProceduralMap::Spikes, 32, 32},
+    {ProceduralMap::Jpeg, 32, 32},
 };
 
 // The worst ray of `technique` against `exact` over the views, and every ray's error.
@@ -120,6 +121,9 @@ void AdversarialTraceTest::mapsFollowTheSeed() {
     const HeightField terraces = makeProceduralMap(ProceduralMap::Terraces, 32, 32, m_seed);
     for (float h : terraces.texels)
         QVERIFY(std::abs(h * 255.0f - std::round(h * 255.0f)) < 1e-3f); // 8-bit levels
+    const HeightField jpeg = makeProceduralMap(ProceduralMap::Jpeg, 32, 32, m_seed);
+    for (float h : jpeg.texels)
+        QVERIFY(std::abs(h * 255.0f - std::round(h * 255.0f)) < 1e-3f); // decoded 8 bits
     const HeightField pits = makeProceduralMap(ProceduralMap::Pits, 32, 32, m_seed);
     QVERIFY(std::count(pits.texels.begin(), pits.texels.end(), 0.0f) >= 1);
     QCOMPARE(std::count(pits.texels.begin(), pits.texels.end(), 0.0f) +
