@@ -34,14 +34,18 @@ PxConeCorners pxConeCorners(ivec2 cell) {
 // How far in t a ray at `uv`, height z, stays inside the upward cone with apex (apex, h) and ratio
 // c: |uv + P s - apex| <= c (z - s - h). The cone is convex, so that is up to its first exit, a
 // root of (|P|^2 - c^2) s^2 + 2 (d.P + c A) s + |d|^2 - A^2 with A = c (z - h). 0 if not inside.
-float pxConeExit(vec2 apex, float h, float c, vec2 uv, vec2 P, float z) {
+// d is the ray's horizontal offset from the apex, uv - apex.
+float pxConeExitFrom(vec2 d, float h, float c, vec2 P, float z) {
     float A = c * (z - h);
-    vec2 d = uv - apex;
     float k = dot(d, d) - A * A;
     if (!(A > 0.0f) || k >= 0.0f)
         return 0.0f;
     float s = pxFirstRoot(dot(P, P) - c * c, 2.0f * (dot(d, P) + c * A), k, z - h);
     return s >= 0.0f ? s : z - h; // inside all the way down to the apex's height
+}
+
+float pxConeExit(vec2 apex, float h, float c, vec2 uv, vec2 P, float z) {
+    return pxConeExitFrom(uv - apex, h, c, P, z);
 }
 
 float pxTraceCone(vec2 uv0, vec2 P) {

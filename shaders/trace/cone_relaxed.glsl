@@ -1,73 +1,75 @@
-// `relaxed-cone`: relaxed cone stepping (Policarpo & Oliveira, GPU Gems 3 ch. 18). The cone sampled
-// at the ray's position, interpolated between texels, may let the ray enter the solid. The step
-// inside a cone is dt = c (z - h) / (c + |P|). Where that would not leave the current cell, the
-// cell is solved exactly instead (docs/cone-maps.md §1, "a minimum step"): zero cones cannot stall
-// the march and features smaller than a cell are not stepped over. (`cone` steps with its corners'
-// cones instead: cone_conservative.glsl.)
+// `relaxed-cone`: relaxed cone stepping (Policarpo & Oliveira, GPU Gems 3 ch. 18), exact on every
+// ray. A relaxed cone at texel b lets a ray enter the solid but not leave it, and only for rays
+// from b's column: inside it no surface point falls away from b (docs/cone-maps.md §1). A cone
+// interpolated at the ray's position is no such cone (a grazing step passed through needles and
+// terraces' edges and out again). So the ray steps only as far as it stays inside the cones of all
+// three corners of a triangle of its cell that holds its position p: a point q inside them falls
+// away from none of the three, and q - p, a convex combination of the q - b, does not fall either,
+// so the ray cannot leave the solid in the step. Of the cell's two triangulations it takes the one
+// that steps further. Where the step would not leave the cell, the cell is solved exactly
+// (docs/cone-maps.md §1, "a minimum step"): zero cones cannot stall the march.
 //
-// The last step's bracket [tPrev, t] is not refined by halvings: the step may cross several
-// features (a thin wall, then the floor behind it), and halvings keep any crossing, not the
-// first. The bracket's cells are solved exactly instead, and a march whose cap runs out is
-// finished by the cell walk. What remains is a step that passes through a feature and out again
-// before its end (a needle at a grazing view): relaxed cones promise one crossing only for rays
-// through their apex, and the interpolated cone is no cone of the surface.
+// A step that ends in the solid crossed the surface once: its cells are solved exactly (halvings
+// would keep any crossing). A march whose cap runs out is finished by the cell walk from the last
+// point known above the surface.
 
-struct PxConeState {
-    float tPrev; // last position known above the surface
-    float t;     // current position
-    float hit;   // exact hit found by a cell solve, or -1
-    bool below;  // the sample at t is at or below the surface
-};
-
-PxConeState pxConeMarch(vec2 uv0, vec2 P) {
-    vec2 X0 = pxCellCoords(uv0);
-    vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
-    float lenP = length(P);
-    PxConeState s;
-    s.t = pxStartT();
-    s.tPrev = s.t;
-    s.hit = -1.0f;
-    s.below = false;
-    for (int i = 0; i < pxMaxSteps; ++i) {
-        vec2 hc = pxConeSample(uv0 + P * s.t);
-        float z = 1.0f - s.t;
-        if (z <= hc.x) {
-            s.below = true;
-            return s;
-        }
-        float spread = hc.y + lenP; // 0 only for a zero cone seen straight down
-        float coneStep = spread > 0.0f ? hc.y * (z - hc.x) / spread : 0.0f;
-        ivec2 cell = pxCellAt(X0, dXY, s.t);
-        float tCell = min(min(pxBorderT(cell.x, X0.x, dXY.x), pxBorderT(cell.y, X0.y, dXY.y)), 1.0f);
-        s.tPrev = s.t;
-        if (s.t + coneStep < tCell) {
-            float root = pxSolveCell(cell, X0, dXY, s.t, tCell);
-            if (root >= 0.0f) {
-                s.hit = root;
-                return s;
-            }
-            s.t = max(s.t, tCell);
-        } else {
-            s.t = min(s.t + coneStep, 1.0f);
-        }
-        if (s.t >= 1.0f) {
-            s.below = true; // f(1) >= 0: the bottom is always solid
-            return s;
-        }
-    }
-    return s;
+// Bilinear height at offset (fx, fy) in a cell with corners h (h00, h10, h01, h11).
+float pxPatchHeight(vec4 h, float fx, float fy) {
+    return pxLerp(pxLerp(h.x, h.y, fx), pxLerp(h.z, h.w, fx), fy);
 }
 
 float pxTraceRelaxedCone(vec2 uv0, vec2 P) {
-    PxConeState s = pxConeMarch(uv0, P);
-    if (s.hit >= 0.0f)
-        return s.hit;
     vec2 X0 = pxCellCoords(uv0);
     vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
-    if (!s.below)
-        return pxFinishExact(X0, dXY, s.t); // the cap ran out above the surface
-    if (s.t <= s.tPrev)
-        return s.t;
-    vec2 r = pxWalkCells(X0, dXY, s.tPrev, s.t, PX_WALK_LIMIT);
-    return r.x >= 0.0f ? r.x : s.t; // no root: rounding at the sample that found the solid
+    vec2 texelUv = vec2(1.0f / float(pxMapSize.x), 1.0f / float(pxMapSize.y));
+    float t = pxStartT();
+    float tAbove = t; // the last t known above the surface
+    for (int i = 0; i < pxMaxSteps; ++i) {
+        ivec2 cell = pxCellAt(X0, dXY, t);
+        float tCell = min(min(pxBorderT(cell.x, X0.x, dXY.x), pxBorderT(cell.y, X0.y, dXY.y)), 1.0f);
+        PxConeCorners k = pxConeCorners(cell);
+        // The ray's offset in the cell, from the exact product (long rays keep the texel).
+        vec2 a = vec2(pxCellOffset(cell.x, X0.x, dXY.x, t), pxCellOffset(cell.y, X0.y, dXY.y, t));
+        float z = 1.0f - t;
+        if (z <= pxPatchHeight(k.h, clamp(a.x, 0.0f, 1.0f), clamp(a.y, 0.0f, 1.0f))) {
+            // The last step ended in the solid, after one crossing.
+            if (t <= tAbove)
+                return t;
+            vec2 r = pxWalkCells(X0, dXY, tAbove, t, PX_WALK_LIMIT);
+            return r.x >= 0.0f ? r.x : t; // no root: rounding at the point that found the solid
+        }
+        vec4 e = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+        for (int j = 0; j < 4; ++j) {
+            ivec2 texel = ivec2(cell.x + (j & 1), cell.y + (j >> 1));
+            // With clamp, texels past the edge repeat the edge's data at another place: no cone.
+            bool inside = texel.x >= 0 && texel.y >= 0 && texel.x < pxMapSize.x && texel.y < pxMapSize.y;
+            if (pxWrapRepeat || inside) {
+                vec2 d = vec2((a.x - float(j & 1)) * texelUv.x, (a.y - float(j >> 1)) * texelUv.y);
+                e[j] = pxConeExitFrom(d, k.h[j], k.c[j], P, z);
+            }
+        }
+        // Diagonal h00-h11: p lies in (00, 10, 11) or (00, 01, 11); diagonal h10-h01: in
+        // (00, 10, 01) or (10, 01, 11).
+        float onMain = min(min(e.x, e.w), a.x >= a.y ? e.y : e.z);
+        float onAnti = min(min(e.y, e.z), a.x + a.y <= 1.0f ? e.x : e.w);
+        float step = max(onMain, onAnti);
+        if (t + step < tCell) {
+            float root = pxSolvePatch(k.h, cell, X0, dXY, t, tCell);
+            if (root >= 0.0f)
+                return root;
+            t = max(t, tCell);
+            tAbove = t;
+        } else {
+            tAbove = t;
+            t = min(t + step, 1.0f);
+        }
+        if (t >= 1.0f) {
+            // f(1) >= 0: the bottom is always solid; the first crossing lies after tAbove.
+            if (t <= tAbove)
+                return 1.0f;
+            vec2 r = pxWalkCells(X0, dXY, tAbove, 1.0f, PX_WALK_LIMIT);
+            return r.x >= 0.0f ? r.x : 1.0f;
+        }
+    }
+    return pxFinishExact(X0, dXY, tAbove); // the cap ran out: walk on from where it was above
 }

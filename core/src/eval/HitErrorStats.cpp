@@ -18,8 +18,8 @@ bool isValid(const TraceResult& r) {
 } // namespace
 
 bool isDocumentedExact(Technique technique) {
-    return technique == Technique::Cone || technique == Technique::Pyramid ||
-           technique == Technique::Exact;
+    return technique == Technique::Cone || technique == Technique::RelaxedCone ||
+           technique == Technique::Pyramid || technique == Technique::Exact;
 }
 
 double nearestRankPercentile(std::vector<double>& values, double q) {

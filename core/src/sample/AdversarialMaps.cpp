@@ -1,8 +1,12 @@
 #include "AdversarialMaps.h"
 
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stdexcept>
+#include <vector>
 
 namespace px {
 namespace {
@@ -34,6 +38,35 @@ float latticeNoise(const std::vector<float>& lattice, int cells, float u, float 
     };
     return (at(x0, y0) * (1 - fx) + at(x0 + 1, y0) * fx) * (1 - fy) +
            (at(x0, y0 + 1) * (1 - fx) + at(x0 + 1, y0 + 1) * fx) * fy;
+}
+
+// An 8-bit map as a real JPEG depth map would be: encoded at quality 75 in memory, decoded back
+// (blocks, ringing next to steep edges, values clamped to 8 bits).
+void throughJpeg(HeightField& f) {
+    std::vector<unsigned char> pixels(f.texels.size());
+    for (std::size_t i = 0; i < pixels.size(); ++i)
+        pixels[i] =
+            static_cast<unsigned char>(std::lround(std::clamp(f.texels[i], 0.0f, 1.0f) * 255));
+    std::vector<unsigned char> file;
+    OIIO::Filesystem::IOVecOutput sink(file);
+    OIIO::ImageSpec spec(f.width, f.height, 1, OIIO::TypeDesc::UINT8);
+    spec.attribute("Compression", "jpeg:75");
+    void* sinkPtr = &sink;
+    spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &sinkPtr);
+    auto writer = OIIO::ImageOutput::create("map.jpg");
+    if (!writer || !writer->open("map.jpg", spec) ||
+        !writer->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !writer->close())
+        throw std::runtime_error("the JPEG map class: OpenImageIO could not encode a JPEG");
+    OIIO::Filesystem::IOMemReader source(file.data(), file.size());
+    OIIO::ImageSpec config;
+    void* sourcePtr = &source;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &sourcePtr);
+    auto reader = OIIO::ImageInput::open("map.jpg", &config);
+    if (!reader || reader->spec().width != f.width || reader->spec().height != f.height ||
+        !reader->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, pixels.data()))
+        throw std::runtime_error("the JPEG map class: OpenImageIO could not decode its JPEG");
+    for (std::size_t i = 0; i < pixels.size(); ++i)
+        f.texels[i] = pixels[i] / 255.0f;
 }
 
 } // namespace
@@ -97,6 +130,24 @@ HeightField makeAdversarialMap(ProceduralMap kind, int width, int height, unsign
         for (int k = 0; k < 6; ++k)
             f.at(texel(width), texel(height)) = 1.0f;
         break;
+    case ProceduralMap::Jpeg: {
+        // Terrain: hills from a coarse lattice, sharp ridges where they fold, a little grain.
+        const int cells = 8;
+        std::vector<float> lattice(cells * cells);
+        for (float& v : lattice)
+            v = uniform(random);
+        for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x) {
+                const float n =
+                    latticeNoise(lattice, cells, (x + 0.5f) / width, (y + 0.5f) / height);
+                const float ridge = 1.0f - std::abs(2.0f * n - 1.0f);
+                f.at(x, y) =
+                    std::clamp(0.7f * ridge + 0.15f * n + 0.1f * uniform(random), 0.0f, 1.0f);
+            }
+        }
+        throughJpeg(f);
+        break;
+    }
     default:
         break;
     }

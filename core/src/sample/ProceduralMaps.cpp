@@ -11,9 +11,9 @@
 namespace px {
 namespace {
 
-constexpr std::array<std::string_view, 17> kNames{
-    "bricks", "stones", "rivets",     "noise", "random", "ramp", "checker",  "spikes",  "step",
-    "cracks", "flat",   "spike-flat", "walls", "treads", "pits", "terraces", "outliers"};
+constexpr std::array<std::string_view, 18> kNames{
+    "bricks", "stones", "rivets",     "noise", "random", "ramp", "checker",  "spikes",   "step",
+    "cracks", "flat",   "spike-flat", "walls", "treads", "pits", "terraces", "outliers", "jpeg"};
 
 // A hash of integer lattice points to [0, 1): deterministic noise without global state.
 float hash01(int x, int y, unsigned seed) {

@@ -73,10 +73,10 @@ long long fetchCap(Technique t, const TraceParams& p, long long rayCells) {
     case Technique::Secant:
         return p.maxLayers + 1 + p.secantSteps;
     // The cone marches and the pyramid end with at most one exact walk over part of the ray.
-    case Technique::Cone:
-        return p.maxSteps + rayCells; // one gather of the cell's corner cones per step
-    case Technique::RelaxedCone:      // a cone sample and a cell solve per step
-    case Technique::Pyramid:          // a node and a cell solve per step
+    case Technique::Cone:        // one gather of the cell's corner cones per step
+    case Technique::RelaxedCone: // the same
+        return p.maxSteps + rayCells;
+    case Technique::Pyramid: // a node and a cell solve per step
         return 2LL * p.maxSteps + rayCells;
     case Technique::Exact:
         return p.maxSteps; // one gather per cell

@@ -6,7 +6,10 @@
 #include "parallax/trace/TraceScene.h"
 
 #include <QtTest>
+#include <cstdlib>
+#include <random>
 #include <set>
+#include <string>
 
 using namespace px;
 
@@ -21,15 +24,32 @@ private slots:
     void boundsFailWhenBroken();
     void unknownCase();
     void cancel();
+
+private:
+    void everyCasePassesWith(unsigned seed);
 };
 
+// With seed 1 and one that changes from run to run (seed 5 once failed `steep` on the 1x1 map,
+// whose random constant seed 1 happened to put on a layer).
 void StabilitySuiteTest::everyCasePasses() {
-    Result<std::vector<StabilityRow>> rows = runStabilitySuite({});
+    const char* given = std::getenv("PX_TEST_SEED");
+    const unsigned seed = given ? static_cast<unsigned>(std::strtoul(given, nullptr, 10))
+                                : std::random_device{}() % 100000u;
+    qInfo("map seeds 1 and %u (PX_TEST_SEED=%u repeats it)", seed, seed);
+    for (unsigned s : {1u, seed})
+        everyCasePassesWith(s);
+}
+
+void StabilitySuiteTest::everyCasePassesWith(unsigned seed) {
+    StabilityOptions options;
+    options.seed = seed;
+    Result<std::vector<StabilityRow>> rows = runStabilitySuite(options);
     QVERIFY(rows.ok());
     std::set<std::string> cases;
     for (const StabilityRow& r : *rows) {
         cases.insert(r.caseName);
-        QVERIFY2(r.passed, qPrintable(QString::fromStdString(r.caseName + " " + r.technique + ": " +
+        QVERIFY2(r.passed, qPrintable(QString::fromStdString("seed " + std::to_string(seed) + ", " +
+                                                             r.caseName + " " + r.technique + ": " +
                                                              r.failure + " (" + r.figure + ")")));
         QVERIFY2(!r.figure.empty(), r.caseName.c_str());
         if (r.technique != "loader")
@@ -96,7 +116,7 @@ void StabilitySuiteTest::fetchCaps() {
     QCOMPARE(fetchCap(Technique::Pom, p, cells), 33LL);
     QCOMPARE(fetchCap(Technique::Relief, p, cells), 39LL);
     QCOMPARE(fetchCap(Technique::Secant, p, cells), 36LL);
-    QCOMPARE(fetchCap(Technique::RelaxedCone, p, cells), 148LL);
+    QCOMPARE(fetchCap(Technique::RelaxedCone, p, cells), 124LL);
     QCOMPARE(fetchCap(Technique::Cone, p, cells), 124LL);
     QCOMPARE(fetchCap(Technique::Pyramid, p, cells), 148LL);
     QCOMPARE(fetchCap(Technique::Exact, p, cells), 24LL);

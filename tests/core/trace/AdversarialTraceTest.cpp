@@ -1,7 +1,6 @@
-// Every ray, not a percentile: `cone` and `pyramid` at their defaults within 0.05 texel of `exact`
-// on maps made to break them, at grazing views, both wrap modes. `relaxed-cone`: p99 within 0.05
-// texel and at most 1 ray in 100 on another surface (a step can pass through a needle and out). The
-// maps' random features come from seeds that change from run to run (printed with every failure;
+// Every ray, not a percentile: `cone`, `relaxed-cone` and `pyramid` at their defaults within 0.05
+// texel of `exact` on maps made to break them, at grazing views, both wrap modes. The maps'
+// random features come from seeds that change from run to run (printed with every failure;
 // PX_TEST_SEED=N repeats one), so each run tries new maps.
 
 #include "DoubleWalk.h"
@@ -46,6 +45,7 @@ constexpr Class kClasses[] = {
     {ProceduralMap::Treads, 48, 16},    {ProceduralMap::Pits, 32, 32},
     {ProceduralMap::Terraces, 32, 32},  {ProceduralMap::Outliers, 32, 32},
     {ProceduralMap::Checker, 16, 16},   {ProceduralMap::Spikes, 32, 32},
+    {ProceduralMap::Jpeg, 32, 32},
 };
 
 // The worst ray of `technique` against `exact` over the views, and every ray's error.
@@ -121,6 +121,9 @@ void AdversarialTraceTest::mapsFollowTheSeed() {
     const HeightField terraces = makeProceduralMap(ProceduralMap::Terraces, 32, 32, m_seed);
     for (float h : terraces.texels)
         QVERIFY(std::abs(h * 255.0f - std::round(h * 255.0f)) < 1e-3f); // 8-bit levels
+    const HeightField jpeg = makeProceduralMap(ProceduralMap::Jpeg, 32, 32, m_seed);
+    for (float h : jpeg.texels)
+        QVERIFY(std::abs(h * 255.0f - std::round(h * 255.0f)) < 1e-3f); // decoded 8 bits
     const HeightField pits = makeProceduralMap(ProceduralMap::Pits, 32, 32, m_seed);
     QVERIFY(std::count(pits.texels.begin(), pits.texels.end(), 0.0f) >= 1);
     QCOMPARE(std::count(pits.texels.begin(), pits.texels.end(), 0.0f) +
@@ -154,22 +157,10 @@ void AdversarialTraceTest::everyRayKeepsItsBound() {
     for (unsigned seed : {m_seed, m_seed + 1}) {
         const HeightField field = makeProceduralMap(c.map, c.width, c.height, seed);
         const Worst w = worstRay(field, wrap ? WrapMode::Clamp : WrapMode::Repeat, t);
-        if (isDocumentedExact(t)) {
-            QVERIFY2(w.error <= kExactTexels,
-                     qPrintable(QString("seed %1: a ray %2 texels from exact at %3")
-                                    .arg(seed)
-                                    .arg(w.error)
-                                    .arg(w.where)));
-            continue;
-        }
-        const HitErrorStats s = w.all.stats();
-        QVERIFY2(s.p99Error <= kExactTexels && s.wrongSurface * 100 <= s.rays,
-                 qPrintable(QString("seed %1: p99 %2, %3 of %4 rays on another surface (worst "
-                                    "%5 texels at %6)")
+        QVERIFY(isDocumentedExact(t));
+        QVERIFY2(w.error <= kExactTexels,
+                 qPrintable(QString("seed %1: a ray %2 texels from exact at %3")
                                 .arg(seed)
-                                .arg(s.p99Error)
-                                .arg(s.wrongSurface)
-                                .arg(s.rays)
                                 .arg(w.error)
                                 .arg(w.where)));
     }
@@ -233,8 +224,7 @@ void AdversarialTraceTest::exactMatchesADoubleWalk() {
     }
 }
 
-// The bar for relaxed-cone on the built-in samples: p99 within 0.05 texel at every bench
-// angle (every ray pooled over the samples).
+// relaxed-cone on the built-in samples at every bench angle: every ray within 0.05 texel.
 void AdversarialTraceTest::relaxedConeOnTheSamples() {
     for (double polar : {30.0, 60.0, 80.0, 87.0}) {
         HitErrorAccumulator acc;
@@ -251,11 +241,11 @@ void AdversarialTraceTest::relaxedConeOnTheSamples() {
             acc.add(traceScene(*relaxed, scene), traceScene(*exact, scene), 64, 64);
         }
         const HitErrorStats s = acc.stats();
-        QVERIFY2(s.p99Error <= 0.05 && s.wrongSurface == 0,
-                 qPrintable(QString("polar %1: p99 %2, %3 rays > 2 texels")
+        QVERIFY2(s.maxError <= kExactTexels,
+                 qPrintable(QString("polar %1: a ray %2 texels from exact (p99 %3)")
                                 .arg(polar)
-                                .arg(s.p99Error)
-                                .arg(s.wrongSurface)));
+                                .arg(s.maxError)
+                                .arg(s.p99Error)));
     }
 }
 

@@ -29,6 +29,7 @@ enum class ProceduralMap {
     Pits,      // the top pierced by isolated one-texel pits to the bottom
     Terraces,  // smooth hills cut into six terraces, 8-bit quantised
     Outliers,  // gentle low noise and six single texels at the top
+    Jpeg,      // hills and grain, 8 bits, through a JPEG codec at quality 75
 };
 
 std::span<const std::string_view> proceduralMapNames();
