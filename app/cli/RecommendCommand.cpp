@@ -15,6 +15,8 @@
 #include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace px::cli {
 
@@ -37,6 +39,7 @@ struct RecommendOptions {
     std::string techniques;
     int rays = 32;
     bool godot = false;
+    bool hdrp = false;
     bool json = false;
     std::string out = "-";
 };
@@ -90,7 +93,7 @@ std::string anglesJson(const std::vector<AngleMeasure>& angles) {
 }
 
 std::string toJson(const Recommendation& r, const RecommendConfig& c,
-                   const std::optional<EngineLayersAdvice>& godot) {
+                   const std::vector<EngineLayersAdvice>& engines) {
     std::ostringstream j;
     j << "{\n  \"found\": " << (r.found ? "true" : "false")
       << ",\n  \"budget\": {\"texels\": " << num(c.budget.texels)
@@ -116,19 +119,19 @@ std::string toJson(const Recommendation& r, const RecommendConfig& c,
     }
     j << "],\n  \"confidence\": " << quoted(r.confidence)
       << ",\n  \"raysPerAngle\": " << r.raysPerAngle;
-    if (godot) {
-        j << ",\n  \"godot\": {\"found\": " << (godot->found ? "true" : "false");
-        const EngineLayers& l = godot->found ? godot->layers : godot->tried;
+    for (const EngineLayersAdvice& e : engines) {
+        j << ",\n  " << quoted(e.engine == EngineMarch::Godot ? "godot" : "hdrp")
+          << ": {\"found\": " << (e.found ? "true" : "false");
+        const EngineLayers& l = e.found ? e.layers : e.tried;
         j << ", \"minLayers\": " << l.minLayers << ", \"maxLayers\": " << l.maxLayers
-          << ", \"angles\": " << anglesJson(godot->angles) << ", \"note\": " << quoted(godot->note)
-          << "}";
+          << ", \"angles\": " << anglesJson(e.angles) << ", \"note\": " << quoted(e.note) << "}";
     }
     j << "\n}\n";
     return j.str();
 }
 
 std::string toText(const Recommendation& r, const RecommendConfig& c,
-                   const std::optional<EngineLayersAdvice>& godot) {
+                   const std::vector<EngineLayersAdvice>& engines) {
     std::ostringstream t;
     t << describe(r, c) << "\n";
     if (r.found) {
@@ -147,8 +150,8 @@ std::string toText(const Recommendation& r, const RecommendConfig& c,
           << ", " << r.measured.size() << " settings measured\n";
     }
     t << "  confidence: " << r.confidence << "\n";
-    if (godot)
-        t << "  " << godot->note << "\n";
+    for (const EngineLayersAdvice& e : engines)
+        t << "  " << e.note << "\n";
     return t.str();
 }
 
@@ -226,19 +229,21 @@ int runRecommend(const RecommendOptions& o) {
     Result<Recommendation> r = recommend(config);
     if (!r)
         return fail(r.error().message);
-    std::optional<EngineLayersAdvice> godot;
-    if (o.godot) {
-        const std::string fallback =
-            r->found
-                ? std::string(info(r->chosen.setting.technique).name) +
-                      (r->chosen.setting.label.empty() ? "" : " (" + r->chosen.setting.label + ")")
-                : std::string();
-        Result<EngineLayersAdvice> advice = recommendGodotLayers(config, fallback);
+    std::vector<EngineLayersAdvice> engines;
+    const std::string fallback =
+        r->found ? std::string(info(r->chosen.setting.technique).name) +
+                       (r->chosen.setting.label.empty() ? "" : " (" + r->chosen.setting.label + ")")
+                 : std::string();
+    for (auto [asked, engine] :
+         {std::pair{o.godot, EngineMarch::Godot}, std::pair{o.hdrp, EngineMarch::Hdrp}}) {
+        if (!asked)
+            continue;
+        Result<EngineLayersAdvice> advice = recommendEngineLayers(engine, config, fallback);
         if (!advice)
             return fail(advice.error().message);
-        godot = std::move(*advice);
+        engines.push_back(std::move(*advice));
     }
-    const std::string report = o.json ? toJson(*r, config, godot) : toText(*r, config, godot);
+    const std::string report = o.json ? toJson(*r, config, engines) : toText(*r, config, engines);
     if (o.out == "-")
         std::cout << report;
     else if (Status s = writeTextFile(o.out, report); !s)
@@ -285,6 +290,8 @@ Action addRecommendCommand(CLI::App& app) {
     cmd->add_option("--rays", o->rays, "Jittered rays per side per azimuth (default 32)")
         ->check(CLI::Range(4, 256));
     cmd->add_flag("--godot", o->godot, "Also the fewest Godot deep-parallax layers that meet it");
+    cmd->add_flag("--hdrp", o->hdrp,
+                  "Also the fewest Unity HDRP parallax-occlusion steps that meet it");
     cmd->add_flag("--json", o->json, "Write JSON instead of text");
     cmd->add_option("--out", o->out, "Output file (default: standard output)");
     return [o] { return runRecommend(*o); };

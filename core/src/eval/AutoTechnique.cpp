@@ -14,7 +14,8 @@ MapSet withAutoInputs(const Material& material, MapSet used) {
 
 Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const HeightField& height,
                                           const ConeMap& cone, const ConeMap& relaxedCone,
-                                          const std::string& source, bool godotLayers) {
+                                          const std::string& source,
+                                          std::optional<EngineMarch> engine) {
     ResolvedAuto resolved{material, {}, std::nullopt};
     if (!material.autoQuality)
         return resolved;
@@ -54,13 +55,14 @@ Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const Height
     resolved.note = "technique auto resolved to " + std::string(info(s.technique).name) +
                     (s.label.empty() ? "" : " (" + s.label + ")") + ": the cheapest setting " +
                     "meeting " + budget + ", " + cost;
-    if (godotLayers) {
-        Result<EngineLayersAdvice> godot = recommendGodotLayers(
-            config, std::string(info(s.technique).name) +
-                        (s.label.empty() ? "" : " (" + s.label + ", in the package's shader)"));
-        if (!godot)
-            return godot.error();
-        resolved.godot = std::move(*godot);
+    if (engine) {
+        Result<EngineLayersAdvice> layers = recommendEngineLayers(
+            *engine, config,
+            std::string(info(s.technique).name) +
+                (s.label.empty() ? "" : " (" + s.label + ", in the package's shader)"));
+        if (!layers)
+            return layers.error();
+        resolved.engineLayers = std::move(*layers);
     }
     return resolved;
 }

@@ -14,32 +14,52 @@ namespace {
 constexpr int kLayerRungs[] = {4,  5,  6,  7,  8,  9,  10, 11, 12, 14, 16, 18,  20, 22,
                                25, 28, 32, 36, 40, 45, 50, 56, 64, 80, 96, 112, 128};
 
-EngineLayers rung(int maxLayers) {
-    return {std::max(1, (maxLayers + 2) / 4), maxLayers};
+// The ladder's min/max pair for a max: Godot's 8-32 keep max = 4 min, HDRP's 5-15 max = 3 min.
+EngineLayers rung(EngineMarch engine, int maxLayers) {
+    const int ratio = engine == EngineMarch::Godot ? 4 : 3;
+    return {std::max(1, (maxLayers + ratio / 2) / ratio), maxLayers};
 }
 
-Probe godotProbe(const EngineLayers& layers, const HeightField& field, WrapMode wrap, float scale) {
+const char* engineName(EngineMarch engine) {
+    return engine == EngineMarch::Godot ? "Godot deep parallax" : "HDRP parallax occlusion";
+}
+
+std::string layersText(EngineMarch engine, const EngineLayers& l) {
+    return std::to_string(l.minLayers) + "-" + std::to_string(l.maxLayers) +
+           (engine == EngineMarch::Godot ? " layers" : " steps");
+}
+
+Probe engineProbe(EngineMarch engine, const EngineLayers& layers, const HeightField& field,
+                  WrapMode wrap) {
     Probe probe;
-    probe.key =
-        "godot:" + std::to_string(layers.minLayers) + "-" + std::to_string(layers.maxLayers);
-    probe.model = RayModel::NormalisedView;
-    probe.make = [layers, &field, wrap, scale]() -> Result<RangeTrace> {
-        return RangeTrace([layers, &field, wrap, scale](const RaySample& rays, std::size_t begin,
-                                                        std::size_t end,
-                                                        std::span<TraceResult> hits) {
+    probe.key = std::string(engine == EngineMarch::Godot ? "godot:" : "hdrp:") +
+                std::to_string(layers.minLayers) + "-" + std::to_string(layers.maxLayers);
+    // Godot offsets by the normalised view vector; HDRP by the relief's own offset.
+    probe.model = engine == EngineMarch::Godot ? RayModel::NormalisedView : RayModel::Relief;
+    probe.make = [engine, layers, &field, wrap]() -> Result<RangeTrace> {
+        return RangeTrace([engine, layers, &field, wrap](const RaySample& rays, std::size_t begin,
+                                                         std::size_t end,
+                                                         std::span<TraceResult> hits) {
             const float sinPolar =
                 static_cast<float>(std::sin(rays.polarDeg * std::numbers::pi / 180.0));
             const float cosPolar = std::sqrt(std::max(0.0f, 1.0f - sinPolar * sinPolar));
-            (void)scale;
             for (std::size_t k = begin; k < end; ++k)
-                hits[k] = godotDeepParallax(field, wrap, rays.uv0[k], rays.P[k], cosPolar, layers);
+                hits[k] =
+                    engine == EngineMarch::Godot
+                        ? godotDeepParallax(field, wrap, rays.uv0[k], rays.P[k], cosPolar, layers)
+                        : hdrpParallaxOcclusion(field, wrap, rays.uv0[k], rays.P[k], layers);
         });
     };
     return probe;
 }
 
-std::string layersText(const EngineLayers& l) {
-    return std::to_string(l.minLayers) + "-" + std::to_string(l.maxLayers) + " layers";
+kernel::TraceKernel heightSampler(const HeightField& field, WrapMode wrap) {
+    // The kernels' own bilinear sampling (shaders/trace/common.glsl), which counts the fetches.
+    kernel::TraceKernel heights;
+    heights.pxMapSize = glm::ivec2(field.width, field.height);
+    heights.pxWrapRepeat = wrap == WrapMode::Repeat;
+    heights.heightField = &field;
+    return heights;
 }
 
 } // namespace
@@ -59,11 +79,7 @@ glm::vec2 godotParallaxVector(float scale, double polarDeg, double azimuthDeg) {
 
 TraceResult godotDeepParallax(const HeightField& field, WrapMode wrap, glm::dvec2 uv0, glm::vec2 P,
                               float cosPolar, const EngineLayers& layers) {
-    // The kernels' own bilinear sampling (shaders/trace/common.glsl), which counts the fetches.
-    kernel::TraceKernel heights;
-    heights.pxMapSize = glm::ivec2(field.width, field.height);
-    heights.pxWrapRepeat = wrap == WrapMode::Repeat;
-    heights.heightField = &field;
+    kernel::TraceKernel heights = heightSampler(field, wrap);
     auto sample = [&](glm::vec2 uv) { return heights.pxHeight(uv); };
     const float numLayers = godotLayerCount(layers, cosPolar);
     const float layerDepth = 1.0f / numLayers;
@@ -98,20 +114,82 @@ TraceResult godotDeepParallax(const HeightField& field, WrapMode wrap, glm::dvec
     return r;
 }
 
-Result<EngineLayersAdvice> recommendGodotLayers(const RecommendConfig& config,
-                                                const std::string& fallback,
-                                                const EvalControl& control) {
+int hdrpStepCount(const EngineLayers& steps, glm::vec2 P) {
+    // acos of normalize(vec3(P, 1)).z is atan |P|
+    const float unitAngle = std::clamp(
+        std::atan(std::sqrt(P.x * P.x + P.y * P.y)) / (std::numbers::pi_v<float> / 2), 0.0f, 1.0f);
+    const float mixed = static_cast<float>(steps.minLayers) +
+                        static_cast<float>(steps.maxLayers - steps.minLayers) * unitAngle;
+    return std::min(static_cast<int>(mixed), 256);
+}
+
+TraceResult hdrpParallaxOcclusion(const HeightField& field, WrapMode wrap, glm::dvec2 uv0,
+                                  glm::vec2 P, const EngineLayers& steps) {
+    kernel::TraceKernel heights = heightSampler(field, wrap);
+    const glm::vec2 base(static_cast<float>(uv0.x), static_cast<float>(uv0.y));
+    auto sample = [&](glm::vec2 offset) { return heights.pxHeight(base + offset); };
+    const int numSteps = std::max(1, hdrpStepCount(steps, P));
+    const float stepSize = 1.0f / static_cast<float>(numSteps);
+    const glm::vec2 perStep = P * stepSize;
+    // The first step is taken before the loop; the ray starts one step below the top.
+    glm::vec2 current(0.0f);
+    float prevHeight = sample(current);
+    current += perStep;
+    float currHeight = sample(current);
+    float rayHeight = 1.0f - stepSize;
+    for (int k = 0; k < numSteps; ++k) {
+        if (currHeight > rayHeight)
+            break;
+        prevHeight = currHeight;
+        rayHeight -= stepSize;
+        current += perStep;
+        currHeight = sample(current);
+    }
+    // Secant steps on the segment between the last two heights.
+    float pt0 = rayHeight + stepSize;
+    float pt1 = rayHeight;
+    float delta0 = pt0 - prevHeight;
+    float delta1 = pt1 - currHeight;
+    glm::vec2 offset(0.0f);
+    float intersection = pt1;
+    for (int k = 0; k < 3; ++k) {
+        intersection = (pt0 * delta1 - pt1 * delta0) / (delta1 - delta0);
+        offset = (1.0f - intersection) * perStep * static_cast<float>(numSteps);
+        currHeight = sample(offset);
+        const float delta = intersection - currHeight;
+        if (std::abs(delta) <= 0.01f)
+            break;
+        if (delta < 0.0f) {
+            delta1 = delta;
+            pt1 = intersection;
+        } else {
+            delta0 = delta;
+            pt0 = intersection;
+        }
+    }
+    TraceResult r;
+    r.u = uv0.x + static_cast<double>(offset.x);
+    r.v = uv0.y + static_cast<double>(offset.y);
+    r.t = 1.0f - intersection;
+    r.fetches = heights.pxFetches;
+    return r;
+}
+
+Result<EngineLayersAdvice> recommendEngineLayers(EngineMarch engine, const RecommendConfig& config,
+                                                 const std::string& fallback,
+                                                 const EvalControl& control) {
     if (Status s = validate(config); !s)
         return s.error();
     ProbeRun run(config, control);
     auto measure = [&](int maxLayers) {
-        return run.measure(godotProbe(rung(maxLayers), *config.field, config.wrap, config.scale),
+        return run.measure(engineProbe(engine, rung(engine, maxLayers), *config.field, config.wrap),
                            false);
     };
     auto meets = [&](const std::vector<AngleMeasure>& angles) {
         return angles.size() == run.polars().size() && angles.back().meets;
     };
     EngineLayersAdvice advice;
+    advice.engine = engine;
     const int top = std::size(kLayerRungs) - 1;
     Result<std::vector<AngleMeasure>> best = measure(kLayerRungs[top]);
     if (!best)
@@ -121,14 +199,16 @@ Result<EngineLayersAdvice> recommendGodotLayers(const RecommendConfig& config,
                   std::string(budgetMetricName(config.budget.metric)).c_str(), config.budget.texels,
                   config.maxPolarDeg);
     if (!meets(*best)) {
-        advice.tried = rung(kLayerRungs[top]);
+        advice.tried = rung(engine, kLayerRungs[top]);
         advice.angles = *best;
         const AngleMeasure& failed = best->back();
         char text[256];
-        std::snprintf(text, sizeof text,
-                      "Godot's deep parallax does not meet %s with up to %s: at %g degrees its "
-                      "p99 error is %.3g texels",
-                      budget, layersText(advice.tried).c_str(), failed.polarDeg, failed.p99);
+        std::snprintf(
+            text, sizeof text,
+            "%s does not meet %s with up to %s: at %g degrees its p99 error is %.3g "
+            "texels",
+            engine == EngineMarch::Godot ? "Godot's deep parallax" : "HDRP's parallax occlusion",
+            budget, layersText(engine, advice.tried).c_str(), failed.polarDeg, failed.p99);
         advice.note = text;
         if (!fallback.empty())
             advice.note += "; " + fallback + " does";
@@ -149,9 +229,9 @@ Result<EngineLayersAdvice> recommendGodotLayers(const RecommendConfig& config,
         }
     }
     advice.found = true;
-    advice.layers = rung(kLayerRungs[hi]);
+    advice.layers = rung(engine, kLayerRungs[hi]);
     advice.angles = chosen;
-    advice.note = "Godot deep parallax with " + layersText(advice.layers) +
+    advice.note = std::string(engineName(engine)) + " with " + layersText(engine, advice.layers) +
                   " (its own march, modelled): the fewest that meet " + budget;
     return advice;
 }

@@ -81,6 +81,8 @@ Status writeUnreal(ExportJob& job) {
              << ",\n  Reference Plane so that white lies on the surface (the relief is carved "
                 "into the polygon), and\n";
         parallaxLines(note, m, "Height Ratio", "Min Steps", "Max Steps");
+        note << "  (Unreal does not publish the function's step formula, so these counts are not "
+                "measured against its march: check them at the steepest view)\n";
         note << "  Feed its Parallax UVs to every texture sample below.\n";
         if (m.selfShadow)
             note << "  Self-shadowing (on in the material) is not set up: the function's Shadow "
@@ -178,7 +180,15 @@ Status writeUnity(ExportJob& job) {
              << "  Primitive Length = Primitive Width = the tile's size in metres (1 for a 1 m "
                 "tile), Lock with height map tiling rate on:\n  HDRP divides the Amplitude by "
                 "the primitive size to get the depth in uv units, so both must match the mesh,\n";
-        stepLines(note, m, "Minimum Steps", "Maximum Steps");
+        if (job.engineLayers) { // technique auto: what HDRP's own march needs
+            const EngineLayersAdvice& a = *job.engineLayers;
+            const EngineLayers& steps = a.found ? a.layers : a.tried;
+            note << "  Minimum Steps = " << steps.minLayers
+                 << ", Maximum Steps = " << steps.maxLayers << "   (" << a.note << ")\n";
+            job.result.notes.push_back(a.note);
+        } else {
+            stepLines(note, m, "Minimum Steps", "Maximum Steps");
+        }
         if (m.selfShadow)
             note << "  Self-shadowing (on in the material) is not exported: HDRP's pixel "
                     "displacement has no self-shadow term (Depth Offset only moves depth).\n";

@@ -22,8 +22,9 @@ struct ExportJob {
     ExportResult& result;
     std::string stem;         // the material's name made safe for file names
     std::string materialFile; // map paths are relative to its folder
-    // Technique "auto" for Godot: the layer counts its own march needs (EngineMarch.h).
-    std::optional<EngineLayersAdvice> godotLayers = std::nullopt;
+    // Technique "auto" for Godot and Unity: the layer counts the engine's own march needs
+    // (EngineMarch.h).
+    std::optional<EngineLayersAdvice> engineLayers = std::nullopt;
 
     // Writes into the export folder and records the file. Errors name the file.
     Status image(const std::string& name, const Image& image, PixelFormat format,

@@ -118,6 +118,15 @@ MapSet mapsToLoad(const Material& m, ExportFormat format) {
     return m.autoQuality ? withAutoInputs(m, mapsFor(m, format)) : mapsFor(m, format);
 }
 
+// The engine whose own march an "auto" export sizes (Unreal's is not published: none).
+std::optional<EngineMarch> engineMarchOf(ExportFormat format) {
+    if (format == ExportFormat::Godot)
+        return EngineMarch::Godot;
+    if (format == ExportFormat::Unity)
+        return EngineMarch::Hdrp;
+    return std::nullopt;
+}
+
 } // namespace
 
 Result<ExportResult> exportMaterial(const Material& material, const std::string& materialFile,
@@ -137,7 +146,7 @@ Result<ExportResult> exportMaterial(const Material& material, const std::string&
     // in the notes and the export carries only what the chosen setting reads.
     Result<ResolvedAuto> resolved = resolveAutoTechnique(
         material, assets->height, assets->cone, assets->relaxedCone,
-        materialFile.empty() ? material.name : materialFile, options.format == ExportFormat::Godot);
+        materialFile.empty() ? material.name : materialFile, engineMarchOf(options.format));
     if (!resolved)
         return resolved.error();
     ExportResult result;
@@ -150,7 +159,7 @@ Result<ExportResult> exportMaterial(const Material& material, const std::string&
                             result,
                             exporter::fileStem(material.name),
                             materialFile,
-                            std::move(resolved->godot)};
+                            std::move(resolved->engineLayers)};
     Status written = success();
     switch (options.format) {
     case ExportFormat::Package:

@@ -87,10 +87,10 @@ Status writeGodot(ExportJob& job) {
             return s;
         // Godot marches layers (deep parallax) or offsets once; it has no cone or pyramid
         // stepping, so those techniques go out as a layer march with the default range.
-        const bool deep = m.technique != Technique::Offset || job.godotLayers;
+        const bool deep = m.technique != Technique::Offset || job.engineLayers;
         TraceParams layers = t.usesLayers ? m.params : info(Technique::Pom).defaults;
-        if (job.godotLayers) { // technique auto: what Godot's own march needs
-            const EngineLayersAdvice& a = *job.godotLayers;
+        if (job.engineLayers) { // technique auto: what Godot's own march needs
+            const EngineLayersAdvice& a = *job.engineLayers;
             layers.minLayers = a.found ? a.layers.minLayers : a.tried.minLayers;
             layers.maxLayers = a.found ? a.layers.maxLayers : a.tried.maxLayers;
             job.result.notes.push_back(a.note);
@@ -104,7 +104,7 @@ Status writeGodot(ExportJob& job) {
                   << "heightmap_max_layers = " << layers.maxLayers << "\n";
         props << "heightmap_flip_texture = " << (depth ? "true" : "false") << "\n"
               << "heightmap_texture = " << texture(name, "height") << "\n";
-        if (!t.usesLayers && deep && !job.godotLayers)
+        if (!t.usesLayers && deep && !job.engineLayers)
             job.result.notes.push_back("Godot has no " + std::string(t.name) +
                                        " technique: exported as deep parallax with " +
                                        std::to_string(layers.minLayers) + " to " +

@@ -134,7 +134,8 @@ void AutoTechniqueTest::resolvesToTheRecommendation() {
     Result<Material> m = parseMaterial(kAutoMaterial, "auto.json");
     QVERIFY(m.ok());
     const HeightField field = makeProceduralMap(ProceduralMap::Stones, 64, 64, 4);
-    Result<ResolvedAuto> resolved = resolveAutoTechnique(*m, field, {}, {}, "auto.json", true);
+    Result<ResolvedAuto> resolved =
+        resolveAutoTechnique(*m, field, {}, {}, "auto.json", EngineMarch::Godot);
     QVERIFY2(resolved.ok(), resolved.ok() ? "" : resolved.error().message.c_str());
     QVERIFY(!resolved->material.autoQuality);
 
@@ -151,7 +152,7 @@ void AutoTechniqueTest::resolvesToTheRecommendation() {
     QVERIFY(QString::fromStdString(resolved->note)
                 .startsWith("technique auto resolved to " +
                             QString::fromUtf8(info(r->chosen.setting.technique).name.data())));
-    QVERIFY(resolved->godot && resolved->godot->found);
+    QVERIFY(resolved->engineLayers && resolved->engineLayers->found);
 
     // A material that names its technique is left as it is.
     Material pom;
@@ -179,12 +180,14 @@ void AutoTechniqueTest::exportCarriesTheChoice() {
     QVERIFY(!godot->notes.empty() &&
             QString::fromStdString(godot->notes.front()).startsWith("technique auto resolved to"));
     const std::string tres = readText(root / "godot" / "untitled.tres");
-    Result<ResolvedAuto> resolved = resolveAutoTechnique(
-        *m, makeProceduralMap(ProceduralMap::Stones, 64, 64, 4), {}, {}, "auto.json", true);
-    QVERIFY(resolved.ok() && resolved->godot && resolved->godot->found);
+    Result<ResolvedAuto> resolved =
+        resolveAutoTechnique(*m, makeProceduralMap(ProceduralMap::Stones, 64, 64, 4), {}, {},
+                             "auto.json", EngineMarch::Godot);
+    QVERIFY(resolved.ok() && resolved->engineLayers && resolved->engineLayers->found);
     const std::string layers =
-        "heightmap_min_layers = " + std::to_string(resolved->godot->layers.minLayers) +
-        "\nheightmap_max_layers = " + std::to_string(resolved->godot->layers.maxLayers) + "\n";
+        "heightmap_min_layers = " + std::to_string(resolved->engineLayers->layers.minLayers) +
+        "\nheightmap_max_layers = " + std::to_string(resolved->engineLayers->layers.maxLayers) +
+        "\n";
     QVERIFY2(tres.find(layers) != std::string::npos, tres.c_str());
 
     options.format = ExportFormat::Package;

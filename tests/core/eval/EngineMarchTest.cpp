@@ -1,6 +1,6 @@
-// The model of Godot 4's deep parallax (BaseMaterial3D, scene/resources/material.cpp) against the
-// published shader written out here step by step in double precision, and the layer advice
-// against a fresh measurement of the model.
+// The models of Godot 4's deep parallax (BaseMaterial3D, scene/resources/material.cpp) and Unity
+// HDRP's parallax occlusion (PerPixelDisplacement.hlsl) against the published shaders written out
+// here step by step in double precision, and the layer advice against a fresh measurement.
 
 #include "parallax/eval/EngineMarch.h"
 
@@ -26,6 +26,9 @@ private slots:
     void flatMapIsFoundExactly();
     void adviceMeetsTheBudgetOnFreshRays();
     void noLayerCountSaysWhatDoes();
+    void hdrpStepCountIsItsAngleMix();
+    void hdrpMatchesThePublishedShader();
+    void hdrpAdviceMeetsTheBudgetOnFreshRays();
 };
 
 namespace {
@@ -67,6 +70,67 @@ ShaderHit publishedShader(const HeightField& field, double u0, double v0, double
     const double beforeDepth = (1.0 - texture(pu, pv)) - currentDepth + layerDepth;
     const double weight = afterDepth / (afterDepth - beforeDepth);
     return {ou * (1.0 - weight) + pu * weight, ov * (1.0 - weight) + pv * weight, fetches};
+}
+
+// HDRP Lit's pixel displacement with its uniforms: the view towards the eye in tangent space, the
+// amplitude in uv units (s), _PPDMinSamples and _PPDMaxSamples; heights white = top.
+ShaderHit publishedHdrp(const HeightField& field, double u0, double v0, double polarDeg,
+                        double azimuthDeg, double amplitude, int minSamples, int maxSamples) {
+    const double r = std::numbers::pi / 180.0;
+    // The eye lies opposite the ray's azimuth (docs/conventions.md §5).
+    const double vx = -std::sin(polarDeg * r) * std::cos(azimuthDeg * r);
+    const double vy = -std::sin(polarDeg * r) * std::sin(azimuthDeg * r);
+    const double vz = std::cos(polarDeg * r);
+    // viewDirUV = normalize(float3(viewDirTS.xy * maxHeight, viewDirTS.z))
+    const double len =
+        std::sqrt(vx * amplitude * vx * amplitude + vy * amplitude * vy * amplitude + vz * vz);
+    const double ux = vx * amplitude / len, uy = vy * amplitude / len, uz = vz / len;
+    const double unitAngle = std::clamp(std::acos(uz) / (std::numbers::pi / 2), 0.0, 1.0);
+    const int numSteps =
+        std::min(static_cast<int>(minSamples + (maxSamples - minSamples) * unitAngle), 256);
+    int fetches = 0;
+    auto height = [&](double ou, double ov) {
+        ++fetches;
+        return test::bilinearHeight(field, WrapMode::Repeat, u0 + ou, v0 + ov);
+    };
+    const double stepSize = 1.0 / numSteps;
+    const double maxU = ux / -uz, maxV = uy / -uz;                 // parallaxMaxOffsetTS
+    const double stepU = stepSize * maxU, stepV = stepSize * maxV; // texOffsetPerStep
+    double cu = 0.0, cv = 0.0;
+    double prevHeight = height(cu, cv);
+    cu += stepU;
+    cv += stepV;
+    double currHeight = height(cu, cv);
+    double rayHeight = 1.0 - stepSize;
+    for (int k = 0; k < numSteps; ++k) {
+        if (currHeight > rayHeight)
+            break;
+        prevHeight = currHeight;
+        rayHeight -= stepSize;
+        cu += stepU;
+        cv += stepV;
+        currHeight = height(cu, cv);
+    }
+    double pt0 = rayHeight + stepSize, pt1 = rayHeight;
+    double delta0 = pt0 - prevHeight, delta1 = pt1 - currHeight;
+    double ou = 0.0, ov = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double intersection = (pt0 * delta1 - pt1 * delta0) / (delta1 - delta0);
+        ou = (1.0 - intersection) * stepU * numSteps;
+        ov = (1.0 - intersection) * stepV * numSteps;
+        currHeight = height(ou, ov);
+        const double delta = intersection - currHeight;
+        if (std::abs(delta) <= 0.01)
+            break;
+        if (delta < 0.0) {
+            delta1 = delta;
+            pt1 = intersection;
+        } else {
+            delta0 = delta;
+            pt0 = intersection;
+        }
+    }
+    return {u0 + ou, v0 + ov, fetches};
 }
 
 } // namespace
@@ -185,6 +249,86 @@ void EngineMarchTest::noLayerCountSaysWhatDoes() {
                              "degrees with up to 32-128 layers: at 85 degrees"),
              qPrintable(note));
     QVERIFY(note.endsWith("; cone (steps 64) does"));
+}
+
+void EngineMarchTest::hdrpStepCountIsItsAngleMix() {
+    // Straight down: the minimum; the uv-space angle is atan(s tan(polar)), not the polar angle.
+    QCOMPARE(hdrpStepCount({5, 15}, {0.0f, 0.0f}), 5);
+    const float s = 0.05f;
+    const double polar = 80.0 * std::numbers::pi / 180.0;
+    const auto P = glm::vec2(static_cast<float>(s * std::tan(polar)), 0.0f);
+    const double unitAngle = std::atan(s * std::tan(polar)) / (std::numbers::pi / 2);
+    QCOMPARE(hdrpStepCount({5, 15}, P), static_cast<int>(5 + 10 * unitAngle));
+    QCOMPARE(hdrpStepCount({5, 15}, P), 6); // a shallow relief at 80 degrees: near the minimum
+    QCOMPARE(hdrpStepCount({8, 400}, {1e6f, 0.0f}), 256); // HDRP's own limit
+}
+
+void EngineMarchTest::hdrpMatchesThePublishedShader() {
+    const HeightField field = makeProceduralMap(ProceduralMap::Stones, 64, 64, 3);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    int compared = 0;
+    for (double polar : {0.0, 30.0, 60.0, 80.0, 88.0}) {
+        for (double azimuth : {0.0, 35.0, 150.0, 260.0}) {
+            for (const EngineLayers& steps : {EngineLayers{5, 15}, EngineLayers{2, 40}}) {
+                const glm::vec2 P = parallaxVector(0.05f, polar, azimuth);
+                for (int k = 0; k < 50; ++k) {
+                    const double u0 = uniform(rng), v0 = uniform(rng);
+                    const ShaderHit want = publishedHdrp(field, u0, v0, polar, azimuth, 0.05,
+                                                         steps.minLayers, steps.maxLayers);
+                    const TraceResult got =
+                        hdrpParallaxOcclusion(field, WrapMode::Repeat, {u0, v0}, P, steps);
+                    const double texels = std::hypot(got.u - want.u, got.v - want.v) * 64.0;
+                    QVERIFY2(texels < 2e-3, qPrintable(QString("polar %1 azimuth %2: %3 texels")
+                                                           .arg(polar)
+                                                           .arg(azimuth)
+                                                           .arg(texels)));
+                    QCOMPARE(got.fetches, want.fetches);
+                    ++compared;
+                }
+            }
+        }
+    }
+    QCOMPARE(compared, 5 * 4 * 2 * 50);
+}
+
+void EngineMarchTest::hdrpAdviceMeetsTheBudgetOnFreshRays() {
+    RecommendConfig config;
+    config.field =
+        std::make_shared<HeightField>(makeProceduralMap(ProceduralMap::Stones, 64, 64, 6));
+    config.name = "stones";
+    config.maxPolarDeg = 75.0;
+    config.budget.texels = 0.25;
+    Result<EngineLayersAdvice> advice = recommendEngineLayers(EngineMarch::Hdrp, config);
+    QVERIFY(advice.ok() && advice->found);
+    QCOMPARE(advice->engine, EngineMarch::Hdrp);
+    QVERIFY(advice->layers.minLayers >= 1 && advice->layers.maxLayers >= 4);
+    QVERIFY2(QString::fromStdString(advice->note).startsWith("HDRP parallax occlusion with "),
+             advice->note.c_str());
+    const HeightField& field = *config.field;
+    TraceMaps maps;
+    maps.height = &field;
+    Result<Tracer> exact =
+        Tracer::create(maps, Technique::Exact, info(Technique::Exact).defaults, config.scale);
+    QVERIFY(exact.ok());
+    // Fresh rays of the test's own drawing against the exact hit of the relief's own ray.
+    std::mt19937 rng(1234);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    for (double polar : recommendationPolars(config.maxPolarDeg)) {
+        std::vector<double> errors;
+        for (double azimuth : config.azimuthDeg) {
+            const glm::vec2 P = parallaxVector(config.scale, polar, azimuth);
+            for (int k = 0; k < 2000; ++k) {
+                const glm::dvec2 uv0(uniform(rng), uniform(rng));
+                const TraceResult hit =
+                    hdrpParallaxOcclusion(field, WrapMode::Repeat, uv0, P, advice->layers);
+                errors.push_back(hitErrorTexels(hit, exact->trace(uv0, P), 64, 64));
+            }
+        }
+        const double p99 = nearestRankPercentile(errors, 0.99);
+        QVERIFY2(p99 <= config.budget.texels,
+                 qPrintable(QString("polar %1: p99 %2").arg(polar).arg(p99)));
+    }
 }
 
 QTEST_GUILESS_MAIN(EngineMarchTest)

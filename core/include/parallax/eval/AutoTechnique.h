@@ -1,7 +1,7 @@
 #pragma once
 // Resolving a material's technique "auto" (Material::autoQuality) where it is rendered or
 // exported: the recommendation (Recommendation.h) on the material's own height map, scale and
-// wrap, and for Godot the layer counts of its own march (EngineMarch.h).
+// wrap, and for Godot and Unity HDRP the layer counts of their own marches (EngineMarch.h).
 
 #include "parallax/Result.h"
 #include "parallax/bake/ConeMap.h"
@@ -18,7 +18,7 @@ namespace px {
 struct ResolvedAuto {
     Material material; // the technique and parameters chosen, autoQuality cleared
     std::string note;  // "technique auto: relaxed-cone (steps 36, binary 4), ..." for the record
-    std::optional<EngineLayersAdvice> godot; // when asked for
+    std::optional<EngineLayersAdvice> engineLayers; // when an engine's march was asked for
 };
 
 // A material without autoQuality comes back unchanged (and no note). Errors: the height map is
@@ -31,6 +31,7 @@ MapSet withAutoInputs(const Material& material, MapSet used);
 
 Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const HeightField& height,
                                           const ConeMap& cone, const ConeMap& relaxedCone,
-                                          const std::string& source, bool godotLayers = false);
+                                          const std::string& source,
+                                          std::optional<EngineMarch> engine = std::nullopt);
 
 } // namespace px

@@ -12,6 +12,17 @@
 // of height scale s needs s tan(polar): Godot's picture is flatter than the relief at grazing
 // angles whatever the layers. Layers only decide how well Godot's march finds *its own* surface,
 // so the layer count is judged against the exact hit of Godot's ray (RayModel::NormalisedView).
+//
+// Unity HDRP (Lit, Pixel displacement; ShaderLibrary/PerPixelDisplacement.hlsl and the Lit's
+// ApplyPerPixelDisplacement):
+//   viewDirUV = normalize(vec3(view.xy * amplitude, view.z))  amplitude in uv units: s
+//   numSteps = int(mix(minSteps, maxSteps, acos(viewDirUV.z) / (pi / 2)))   truncated, <= 256
+//   P = viewDirUV.xy / viewDirUV.z = s tan(polar)              the relief's own offset
+//   march P / numSteps while the height <= the ray's height, starting one step in, then up to
+//   three secant steps between the last two heights (stopping within 0.01 of the surface).
+// HDRP offsets by the relief's tan θ, so its march is judged against the relief's exact hit.
+// Unreal's ParallaxOcclusionMapping material function has no published formula (its HLSL lives
+// in a binary asset): its steps are not modelled, and an Unreal export says so.
 
 #include "parallax/Result.h"
 #include "parallax/eval/EvalControl.h"
@@ -42,7 +53,18 @@ TraceResult godotDeepParallax(const HeightField& field, WrapMode wrap, glm::dvec
 // Godot's P for the canonical scene's angles: s sin(polar) (cos azimuth, sin azimuth).
 glm::vec2 godotParallaxVector(float scale, double polarDeg, double azimuthDeg);
 
+// HDRP's step count for a ray of the relief's offset P (uv units per unit of depth): the
+// uv-space view angle is atan|P|.
+int hdrpStepCount(const EngineLayers& steps, glm::vec2 P);
+
+// One ray of HDRP's parallax occlusion mapping with the relief's P (s tan(polar)).
+TraceResult hdrpParallaxOcclusion(const HeightField& field, WrapMode wrap, glm::dvec2 uv0,
+                                  glm::vec2 P, const EngineLayers& steps);
+
+enum class EngineMarch { Godot, Hdrp };
+
 struct EngineLayersAdvice {
+    EngineMarch engine = EngineMarch::Godot;
     bool found = false;
     EngineLayers layers;              // found: the smallest that meet the budget
     std::vector<AngleMeasure> angles; // of those layers, or of the most the ladder tried
@@ -50,11 +72,18 @@ struct EngineLayersAdvice {
     std::string note;                 // one sentence for the export's notes
 };
 
-// The smallest Godot min/max layers (max = 4 min, as Godot's 8-32) that meet config's budget at
-// every angle up to config.maxPolarDeg, measured as recommend() measures (the same rays, cache and
-// confidence). `fallback` names what does meet it when no layer count does (may be empty).
-Result<EngineLayersAdvice> recommendGodotLayers(const RecommendConfig& config,
-                                                const std::string& fallback = {},
-                                                const EvalControl& control = {});
+// The smallest min/max layers of an engine's march that meet config's budget at every angle up
+// to config.maxPolarDeg, measured as recommend() measures (the same rays, cache and confidence).
+// The ladder keeps the engine's default ratio: Godot's 8-32 (max = 4 min), HDRP's 5-15 (max = 3
+// min). `fallback` names what does meet the budget when no layer count does (may be empty).
+Result<EngineLayersAdvice> recommendEngineLayers(EngineMarch engine, const RecommendConfig& config,
+                                                 const std::string& fallback = {},
+                                                 const EvalControl& control = {});
+
+inline Result<EngineLayersAdvice> recommendGodotLayers(const RecommendConfig& config,
+                                                       const std::string& fallback = {},
+                                                       const EvalControl& control = {}) {
+    return recommendEngineLayers(EngineMarch::Godot, config, fallback, control);
+}
 
 } // namespace px
