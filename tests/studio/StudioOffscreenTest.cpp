@@ -160,6 +160,23 @@ private slots:
         const QString name = QString::fromUtf8(info(m.technique).name.data());
         QVERIFY2(panel->autoStatus().contains(name), qPrintable(panel->autoStatus()));
 
+        // The chart shows every setting measured at the steepest view, the choice ringed.
+        WorkPrecisionView* chart = panel->autoChart();
+        QVERIFY(chart->hasPanel() && !chart->isHidden());
+        QCOMPARE(chart->panel().polarDeg, 70.0);
+        QVERIFY(chart->highlight().has_value());
+        const WorkPrecisionPoint& ringed = chart->panel().at(*chart->highlight());
+        QCOMPARE(ringed.setting.technique, m.technique);
+        QCOMPARE(ringed.setting.label, direct->recommendation->chosen.setting.label);
+        QCOMPARE(ringed.error, direct->recommendation->chosen.angles.front().p99);
+        QVERIFY(ringed.error <= 0.25);
+        QCOMPARE(ringed.onFront, direct->recommendation->chosen.onFront);
+        QVERIFY2(panel->autoStatus().contains("Pareto front"), qPrintable(panel->autoStatus()));
+        std::size_t points = 0;
+        for (const WorkPrecisionSeries& series : chart->panel().series)
+            points += series.points.size();
+        QCOMPARE(points, direct->recommendation->measured.size());
+
         // By hand: the combo's choice replaces auto.
         const Technique other =
             m.technique == Technique::Relief ? Technique::Pom : Technique::Relief;
@@ -167,6 +184,7 @@ private slots:
         QCOMPARE(w.document()->material().technique, other);
         QVERIFY(!w.document()->material().autoQuality);
         QVERIFY(panel->autoStatus().contains("by hand"));
+        QVERIFY(!chart->hasPanel() && chart->isHidden());
     }
 
     void noGlMessageNamesBothVersions() {

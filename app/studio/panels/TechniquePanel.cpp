@@ -2,7 +2,9 @@
 
 #include "jobs/BackgroundLoad.h"
 #include "model/MaterialDocument.h"
+#include "panels/WorkPrecisionView.h"
 #include "parallax/eval/AutoTechnique.h"
+#include "parallax/eval/WorkPrecision.h"
 #include "widgets/Hints.h"
 #include "widgets/RangeSlider.h"
 #include "widgets/SliderField.h"
@@ -120,6 +122,13 @@ TechniquePanel::TechniquePanel(MaterialDocument* document, QWidget* parent)
     autoForm->addRow(tr("Up to"), m_autoPolar);
     autoForm->addRow(m_autoPick);
     autoForm->addRow(m_autoStatus);
+    m_autoChart = new WorkPrecisionView(m_autoBox);
+    m_autoChart->setMinimumHeight(180);
+    m_autoChart->setToolTip(tr("Every setting Pick measured, p99 error against mean fetches at the "
+                               "steepest view; the ring is the choice, the dashed line the "
+                               "Pareto front."));
+    m_autoChart->hide();
+    autoForm->addRow(m_autoChart);
     layout->addWidget(m_autoBox);
     connect(m_autoPick, &QPushButton::clicked, this, &TechniquePanel::pickAuto);
 
@@ -205,6 +214,16 @@ void TechniquePanel::pickAuto() {
         next.material.autoQuality = quality; // still auto: export measures its own maps again
     });
     m_autoNote = QString::fromStdString(resolved->note);
+    if (resolved->recommendation) {
+        std::optional<PointRef> chosenPoint;
+        m_autoChart->setPanel(makeRecommendationPanel(*resolved->recommendation, &chosenPoint));
+        m_autoChart->setHighlight(chosenPoint);
+        if (chosenPoint)
+            m_autoNote += resolved->recommendation->chosen.onFront
+                              ? tr(" It lies on the Pareto front (ringed).")
+                              : tr(" It lies off the Pareto front (ringed): a setting on it is "
+                                   "cheaper but misses the budget at a gentler angle.");
+    }
     refresh();
 }
 
@@ -270,6 +289,7 @@ void TechniquePanel::refresh() {
     const std::optional<AutoQuality>& a = s.material.autoQuality;
     if (!a) {
         m_autoNote.clear();
+        m_autoChart->clear();
         m_autoStatus->setText(tr("The technique is chosen by hand."));
     } else {
         const QSignalBlocker x(m_autoBudget), y(m_autoPolar);
@@ -279,6 +299,7 @@ void TechniquePanel::refresh() {
                                   ? tr("Auto, not measured here yet: Pick measures it.")
                                   : m_autoNote);
     }
+    m_autoChart->setVisible(m_autoChart->hasPanel());
 }
 
 } // namespace px::studio

@@ -19,6 +19,7 @@ class MaterialDocument;
 class RangeSlider;
 class SliderField;
 class TechniqueCombo;
+class WorkPrecisionView;
 struct ViewQuality;
 
 class TechniquePanel : public QWidget {
@@ -40,6 +41,9 @@ public:
     QDoubleSpinBox* autoMaxPolar() const { return m_autoPolar; }
     QPushButton* autoPick() const { return m_autoPick; }
     QString autoStatus() const;
+    // The last Pick's measured settings at the steepest angle, the choice ringed (hidden until
+    // a Pick, and once the technique is chosen by hand).
+    WorkPrecisionView* autoChart() const { return m_autoChart; }
 
 private:
     void refresh();
@@ -68,6 +72,7 @@ private:
     QDoubleSpinBox* m_autoPolar;
     QPushButton* m_autoPick;
     QLabel* m_autoStatus;
+    WorkPrecisionView* m_autoChart;
     QString m_autoNote; // the last resolution's note, while the material is still auto
 };
 

@@ -43,12 +43,19 @@ QColor WorkPrecisionView::techniqueColour(Technique technique) {
 void WorkPrecisionView::setPanel(const WorkPrecisionPanel& panel) {
     m_panel = panel;
     m_hover.reset();
+    m_highlight.reset();
     update();
 }
 
 void WorkPrecisionView::clear() {
     m_panel.reset();
     m_hover.reset();
+    m_highlight.reset();
+    update();
+}
+
+void WorkPrecisionView::setHighlight(std::optional<PointRef> ref) {
+    m_highlight = ref;
     update();
 }
 
@@ -182,6 +189,11 @@ void WorkPrecisionView::paintEvent(QPaintEvent*) {
             p.setBrush(point.setting.isDefault ? pal.color(QPalette::Base) : colour);
             p.drawEllipse(pointPosition({s, i}), hover ? radius * 2 : radius * 1.3,
                           hover ? radius * 2 : radius * 1.3);
+            if (m_highlight && m_highlight->series == s && m_highlight->point == i) {
+                p.setPen(QPen(pal.color(QPalette::Highlight), 2.5));
+                p.setBrush(Qt::NoBrush);
+                p.drawEllipse(pointPosition({s, i}), radius * 3, radius * 3);
+            }
         }
         // Legend.
         const double lx = r.right() + fm.height();

@@ -17,6 +17,9 @@ public:
 
     void setPanel(const WorkPrecisionPanel& panel);
     void clear();
+    // A point drawn ringed (the editor's Auto choice); reset by setPanel and clear.
+    void setHighlight(std::optional<PointRef> ref);
+    std::optional<PointRef> highlight() const { return m_highlight; }
     bool hasPanel() const { return m_panel.has_value(); }
     const WorkPrecisionPanel& panel() const { return *m_panel; }
     // Where a point is drawn, in widget coordinates (tests click there).
@@ -43,6 +46,7 @@ private:
 
     std::optional<WorkPrecisionPanel> m_panel;
     std::optional<PointRef> m_hover;
+    std::optional<PointRef> m_highlight;
 };
 
 } // namespace px::studio

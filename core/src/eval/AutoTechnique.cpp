@@ -55,6 +55,7 @@ Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const Height
     resolved.note = "technique auto resolved to " + std::string(info(s.technique).name) +
                     (s.label.empty() ? "" : " (" + s.label + ")") + ": the cheapest setting " +
                     "meeting " + budget + ", " + cost;
+    resolved.recommendation = *r;
     if (engine) {
         Result<EngineLayersAdvice> layers = recommendEngineLayers(
             *engine, config,

@@ -49,6 +49,32 @@ void markFront(WorkPrecisionPanel& panel) {
     }
 }
 
+WorkPrecisionSeries& seriesOf(WorkPrecisionPanel& panel, Technique technique) {
+    auto series = std::find_if(panel.series.begin(), panel.series.end(),
+                               [&](auto& s) { return s.technique == technique; });
+    if (series == panel.series.end())
+        series = panel.series.insert(panel.series.end(), {technique, {}});
+    return *series;
+}
+
+// The ranges over the panel's points, and its front.
+void finishPanel(WorkPrecisionPanel& panel, double errorFloor) {
+    double costLo = std::numeric_limits<double>::infinity(), costHi = 0.0;
+    double errorHi = errorFloor;
+    for (const WorkPrecisionSeries& s : panel.series) {
+        for (const WorkPrecisionPoint& p : s.points) {
+            costLo = std::min(costLo, p.cost);
+            costHi = std::max(costHi, p.cost);
+            errorHi = std::max({errorHi, p.plotError, p.plotMaxError});
+        }
+    }
+    if (costHi > 0.0)
+        panel.costRange = enclosingDecades(costLo, costHi);
+    // A decade below the floor, so the points drawn at it stay visible above the axis.
+    panel.errorRange = enclosingDecades(errorFloor / 10.0, errorHi);
+    markFront(panel);
+}
+
 } // namespace
 
 std::string_view costAxisTitle(CostAxis axis) {
@@ -82,18 +108,11 @@ WorkPrecisionChart makeWorkPrecisionChart(const BenchReport& report, double erro
             WorkPrecisionPanel panel;
             panel.polarDeg = polar;
             panel.axis = axis;
-            double costLo = std::numeric_limits<double>::infinity(), costHi = 0.0;
-            double errorHi = errorFloor;
             for (std::size_t i = 0; i < report.pooled.size(); ++i) {
                 const BenchRow& row = report.pooled[i];
                 const std::optional<double> cost = costOf(row, axis);
                 if (row.polarDeg != polar || !cost || !(*cost > 0.0))
                     continue;
-                auto series = std::find_if(panel.series.begin(), panel.series.end(), [&](auto& s) {
-                    return s.technique == row.setting.technique;
-                });
-                if (series == panel.series.end())
-                    series = panel.series.insert(panel.series.end(), {row.setting.technique, {}});
                 WorkPrecisionPoint point;
                 point.cost = *cost;
                 // Against GPU time, the error of what the GPU kernels drew where it was measured.
@@ -105,20 +124,45 @@ WorkPrecisionChart makeWorkPrecisionChart(const BenchReport& report, double erro
                 point.wrongSurface = row.stats.wrongSurface;
                 point.row = i;
                 point.setting = row.setting;
-                series->points.push_back(point);
-                costLo = std::min(costLo, *cost);
-                costHi = std::max(costHi, *cost);
-                errorHi = std::max({errorHi, point.plotError, point.plotMaxError});
+                seriesOf(panel, row.setting.technique).points.push_back(point);
             }
-            if (costHi > 0.0)
-                panel.costRange = enclosingDecades(costLo, costHi);
-            // A decade below the floor, so the points drawn at it stay visible above the axis.
-            panel.errorRange = enclosingDecades(errorFloor / 10.0, errorHi);
-            markFront(panel);
+            finishPanel(panel, errorFloor);
             chart.panels.push_back(std::move(panel));
         }
     }
     return chart;
+}
+
+WorkPrecisionPanel makeRecommendationPanel(const Recommendation& r, std::optional<PointRef>* chosen,
+                                           double errorFloor) {
+    WorkPrecisionPanel panel;
+    panel.polarDeg = r.polarDeg.empty() ? 0.0 : r.polarDeg.front();
+    panel.axis = CostAxis::Fetches;
+    for (std::size_t i = 0; i < r.measured.size(); ++i) {
+        const MeasuredSetting& m = r.measured[i];
+        // angles end at the first that fails, so the steepest is always there when any is
+        if (m.angles.empty() || m.angles.front().polarDeg != panel.polarDeg ||
+            !(m.angles.front().meanFetches > 0.0))
+            continue;
+        const AngleMeasure& a = m.angles.front();
+        WorkPrecisionPoint point;
+        point.cost = a.meanFetches;
+        point.error = a.p99;
+        point.plotError = std::max(a.p99, errorFloor);
+        point.maxError = a.maxError;
+        point.plotMaxError = std::max(a.maxError, errorFloor);
+        point.wrongSurface = a.wrongSurface;
+        point.row = i;
+        point.setting = m.setting;
+        WorkPrecisionSeries& series = seriesOf(panel, m.setting.technique);
+        series.points.push_back(point);
+        if (chosen && r.found && m.setting.technique == r.chosen.setting.technique &&
+            m.setting.label == r.chosen.setting.label)
+            *chosen = PointRef{static_cast<std::size_t>(&series - panel.series.data()),
+                               series.points.size() - 1};
+    }
+    finishPanel(panel, errorFloor);
+    return panel;
 }
 
 } // namespace px

@@ -14,6 +14,7 @@ private slots:
     void seriesAndFront();
     void floorAndRanges();
     void costAxes();
+    void recommendationPanelRingsTheChoice();
 };
 
 namespace {
@@ -39,6 +40,26 @@ BenchReport report() {
                 row(Technique::Pyramid, 0, 30, 1e-7),  row(Technique::Exact, 0, 80, 0.0),
                 row(Technique::Pom, 32, 20, 2.0, 30.0)};
     return r;
+}
+
+MeasuredSetting measured(Technique t, const std::string& label, double fetches, double p99,
+                         bool meets) {
+    MeasuredSetting m;
+    m.setting.technique = t;
+    m.setting.label = label;
+    AngleMeasure a;
+    a.polarDeg = 75.0;
+    a.meanFetches = fetches;
+    a.p99 = p99;
+    a.maxError = p99 * 3;
+    a.wrongSurface = p99 > 2 ? 7 : 0;
+    m.angles.push_back(a);
+    if (meets) {
+        a.polarDeg = 70.0; // gentler angles follow a meeting steepest one
+        m.angles.push_back(a);
+    }
+    m.meets = meets;
+    return m;
 }
 
 } // namespace
@@ -101,6 +122,43 @@ void WorkPrecisionTest::costAxes() {
     QCOMPARE(chart.axes.back(), CostAxis::GpuTime);
     QCOMPARE(chart.panel(0, 2).series[0].points[1].error, 1.25); // pom 32 at 80 degrees
     QCOMPARE(chart.panel(0, 0).series[0].points[1].error, 1.0);  // the CPU's on the others
+}
+
+void WorkPrecisionTest::recommendationPanelRingsTheChoice() {
+    Recommendation r;
+    r.polarDeg = {75.0, 70.0};
+    r.measured = {measured(Technique::Pom, "layers 4-16", 9, 3.0, false),
+                  measured(Technique::Pom, "layers 8-32", 18, 0.4, true),
+                  measured(Technique::RelaxedCone, "steps 8", 6, 0.3, true),
+                  measured(Technique::RelaxedCone, "steps 16", 7, 0.3, true)};
+    r.found = true;
+    r.chosen = r.measured[2];
+    std::optional<PointRef> chosen;
+    const WorkPrecisionPanel panel = makeRecommendationPanel(r, &chosen);
+    QCOMPARE(panel.polarDeg, 75.0);
+    QCOMPARE(panel.axis, CostAxis::Fetches);
+    QCOMPARE(panel.series.size(), std::size_t(2));
+    QCOMPARE(panel.series[0].points.size(), std::size_t(2));
+    QVERIFY(chosen.has_value());
+    const WorkPrecisionPoint& c = panel.at(*chosen);
+    QCOMPARE(c.setting.technique, Technique::RelaxedCone);
+    QCOMPARE(c.setting.label, std::string("steps 8"));
+    QCOMPARE(c.row, std::size_t(2));
+    QCOMPARE(c.cost, 6.0);
+    QCOMPARE(c.maxError, 0.9);
+    // The front at the steepest angle: steps 8 (cheapest and best); steps 16 and both POM
+    // settings are dominated by it.
+    QVERIFY(c.onFront);
+    QCOMPARE(panel.front.size(), std::size_t(1));
+    QCOMPARE(panel.at(panel.front[0]).setting.label, std::string("steps 8"));
+    QCOMPARE(panel.series[0].points[0].wrongSurface, std::int64_t(7));
+    QVERIFY(panel.costRange.loExp <= 0 && panel.costRange.hiExp >= 2);
+
+    // Nothing found: no point is ringed, the points are still there.
+    r.found = false;
+    chosen.reset();
+    QCOMPARE(makeRecommendationPanel(r, &chosen).series.size(), std::size_t(2));
+    QVERIFY(!chosen.has_value());
 }
 
 QTEST_APPLESS_MAIN(WorkPrecisionTest)

@@ -19,6 +19,7 @@ struct ResolvedAuto {
     Material material; // the technique and parameters chosen, autoQuality cleared
     std::string note;  // "technique auto: relaxed-cone (steps 36, binary 4), ..." for the record
     std::optional<EngineLayersAdvice> engineLayers; // when an engine's march was asked for
+    std::optional<Recommendation> recommendation;   // what was measured (auto only)
 };
 
 // A material without autoQuality comes back unchanged (and no note). Errors: the height map is

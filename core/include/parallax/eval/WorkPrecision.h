@@ -5,6 +5,7 @@
 // why every point carries the setting it came from: clicking it applies that setting.
 
 #include "parallax/eval/Bench.h"
+#include "parallax/eval/Recommendation.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -73,5 +74,12 @@ struct WorkPrecisionChart {
 // Errors below `errorFloor` texels (exact, pyramid) are drawn at the floor. Points whose cost is
 // not positive (no log position) are left out.
 WorkPrecisionChart makeWorkPrecisionChart(const BenchReport& report, double errorFloor = 1e-4);
+
+// The settings a recommendation measured, at its steepest angle: p99 against mean fetches (what
+// the editor shows its choice on). A point's `row` indexes Recommendation::measured; `chosen` is
+// set to the chosen setting's point when the recommendation found one.
+WorkPrecisionPanel makeRecommendationPanel(const Recommendation& r,
+                                           std::optional<PointRef>* chosen = nullptr,
+                                           double errorFloor = 1e-4);
 
 } // namespace px
