@@ -16,7 +16,7 @@ Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const Height
                                           const ConeMap& cone, const ConeMap& relaxedCone,
                                           const std::string& source,
                                           std::optional<EngineMarch> engine) {
-    ResolvedAuto resolved{material, {}, std::nullopt};
+    ResolvedAuto resolved{material, {}, std::nullopt, std::nullopt};
     if (!material.autoQuality)
         return resolved;
     if (height.empty())

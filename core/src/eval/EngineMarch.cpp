@@ -202,13 +202,14 @@ Result<EngineLayersAdvice> recommendEngineLayers(EngineMarch engine, const Recom
         advice.tried = rung(engine, kLayerRungs[top]);
         advice.angles = *best;
         const AngleMeasure& failed = best->back();
-        char text[256];
+        char text[320];
         std::snprintf(
             text, sizeof text,
-            "%s does not meet %s with up to %s: at %g degrees its p99 error is %.3g "
-            "texels",
+            "%s does not meet %s with up to %s: at %g degrees its p99 error is %.3g texels "
+            "(upper bound %.3g), its worst ray %.3g",
             engine == EngineMarch::Godot ? "Godot's deep parallax" : "HDRP's parallax occlusion",
-            budget, layersText(engine, advice.tried).c_str(), failed.polarDeg, failed.p99);
+            budget, layersText(engine, advice.tried).c_str(), failed.polarDeg, failed.p99,
+            failed.p99Bound, failed.maxError);
         advice.note = text;
         if (!fallback.empty())
             advice.note += "; " + fallback + " does";
