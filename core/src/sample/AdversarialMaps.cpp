@@ -40,6 +40,21 @@ float latticeNoise(const std::vector<float>& lattice, int cells, float u, float 
            (at(x0, y0 + 1) * (1 - fx) + at(x0 + 1, y0 + 1) * fx) * fy;
 }
 
+// Hills from a coarse random lattice (drawn first), then each texel, row by row, as `shape` makes
+// it from the hills' value there.
+template <class Shape> void hills(HeightField& f, std::mt19937& random, Shape shape) {
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    const int cells = 8;
+    std::vector<float> lattice(cells * cells);
+    for (float& v : lattice)
+        v = uniform(random);
+    for (int y = 0; y < f.height; ++y) {
+        for (int x = 0; x < f.width; ++x)
+            f.at(x, y) =
+                shape(latticeNoise(lattice, cells, (x + 0.5f) / f.width, (y + 0.5f) / f.height));
+    }
+}
+
 // An 8-bit map as a real JPEG depth map would be: encoded at quality 75 in memory, decoded back
 // (blocks, ringing next to steep edges, values clamped to 8 bits).
 void throughJpeg(HeightField& f) {
@@ -109,18 +124,10 @@ HeightField makeAdversarialMap(ProceduralMap kind, int width, int height, unsign
         break;
     case ProceduralMap::Terraces: {
         // Smooth hills cut into six flat terraces, stored as 8 bits would store them.
-        const int cells = 8;
-        std::vector<float> lattice(cells * cells);
-        for (float& v : lattice)
-            v = uniform(random);
-        for (int y = 0; y < height; ++y) {
-            for (int x = 0; x < width; ++x) {
-                const float n =
-                    latticeNoise(lattice, cells, (x + 0.5f) / width, (y + 0.5f) / height);
-                const float terrace = std::min(5.0f, std::floor(n * 6.0f)) / 5.0f;
-                f.at(x, y) = std::round(terrace * 255.0f) / 255.0f;
-            }
-        }
+        hills(f, random, [](float n) {
+            const float terrace = std::min(5.0f, std::floor(n * 6.0f)) / 5.0f;
+            return std::round(terrace * 255.0f) / 255.0f;
+        });
         break;
     }
     case ProceduralMap::Outliers:
@@ -132,19 +139,10 @@ HeightField makeAdversarialMap(ProceduralMap kind, int width, int height, unsign
         break;
     case ProceduralMap::Jpeg: {
         // Terrain: hills from a coarse lattice, sharp ridges where they fold, a little grain.
-        const int cells = 8;
-        std::vector<float> lattice(cells * cells);
-        for (float& v : lattice)
-            v = uniform(random);
-        for (int y = 0; y < height; ++y) {
-            for (int x = 0; x < width; ++x) {
-                const float n =
-                    latticeNoise(lattice, cells, (x + 0.5f) / width, (y + 0.5f) / height);
-                const float ridge = 1.0f - std::abs(2.0f * n - 1.0f);
-                f.at(x, y) =
-                    std::clamp(0.7f * ridge + 0.15f * n + 0.1f * uniform(random), 0.0f, 1.0f);
-            }
-        }
+        hills(f, random, [&](float n) {
+            const float ridge = 1.0f - std::abs(2.0f * n - 1.0f);
+            return std::clamp(0.7f * ridge + 0.15f * n + 0.1f * uniform(random), 0.0f, 1.0f);
+        });
         throughJpeg(f);
         break;
     }

@@ -133,6 +133,35 @@ ShaderHit publishedHdrp(const HeightField& field, double u0, double v0, double p
     return {u0 + ou, v0 + ov, fetches};
 }
 
+// p99 of an engine march's hits at every angle the advice judged, on fresh rays of the test's own
+// drawing (2000 per azimuth) against the exact hit of the same ray; `offset` gives the engine's P
+// for (polar, azimuth), `march` traces one ray with it.
+template <class Offset, class March>
+void checkFreshP99(const RecommendConfig& config, unsigned seed, Offset offset, March march) {
+    const HeightField& field = *config.field;
+    TraceMaps maps;
+    maps.height = &field;
+    Result<Tracer> exact =
+        Tracer::create(maps, Technique::Exact, info(Technique::Exact).defaults, config.scale);
+    QVERIFY(exact.ok());
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    for (double polar : recommendationPolars(config.maxPolarDeg)) {
+        std::vector<double> errors;
+        for (double azimuth : config.azimuthDeg) {
+            const glm::vec2 P = offset(polar, azimuth);
+            for (int k = 0; k < 2000; ++k) {
+                const glm::dvec2 uv0(uniform(rng), uniform(rng));
+                errors.push_back(
+                    hitErrorTexels(march(uv0, P, polar), exact->trace(uv0, P), 64, 64));
+            }
+        }
+        const double p99 = nearestRankPercentile(errors, 0.99);
+        QVERIFY2(p99 <= config.budget.texels,
+                 qPrintable(QString("polar %1: p99 %2").arg(polar).arg(p99)));
+    }
+}
+
 } // namespace
 
 void EngineMarchTest::layerCountIsGodotsMix() {
@@ -206,31 +235,17 @@ void EngineMarchTest::adviceMeetsTheBudgetOnFreshRays() {
     QVERIFY(advice->layers.maxLayers >= 4 && advice->layers.minLayers >= 1);
     QVERIFY(QString::fromStdString(advice->note).startsWith("Godot deep parallax with "));
 
-    // Fresh rays of the test's own drawing against the exact hit of Godot's own ray.
-    const HeightField& field = *config.field;
-    TraceMaps maps;
-    maps.height = &field;
-    Result<Tracer> exact =
-        Tracer::create(maps, Technique::Exact, info(Technique::Exact).defaults, config.scale);
-    QVERIFY(exact.ok());
-    std::mt19937 rng(99);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    for (double polar : recommendationPolars(config.maxPolarDeg)) {
-        std::vector<double> errors;
-        const float cosPolar = static_cast<float>(std::cos(polar * std::numbers::pi / 180.0));
-        for (double azimuth : config.azimuthDeg) {
-            const glm::vec2 P = godotParallaxVector(config.scale, polar, azimuth);
-            for (int k = 0; k < 2000; ++k) {
-                const glm::dvec2 uv0(uniform(rng), uniform(rng));
-                const TraceResult hit =
-                    godotDeepParallax(field, WrapMode::Repeat, uv0, P, cosPolar, advice->layers);
-                errors.push_back(hitErrorTexels(hit, exact->trace(uv0, P), 64, 64));
-            }
-        }
-        const double p99 = nearestRankPercentile(errors, 0.99);
-        QVERIFY2(p99 <= config.budget.texels,
-                 qPrintable(QString("polar %1: p99 %2").arg(polar).arg(p99)));
-    }
+    // Against the exact hit of Godot's own ray.
+    checkFreshP99(
+        config, 99,
+        [&](double polar, double azimuth) {
+            return godotParallaxVector(config.scale, polar, azimuth);
+        },
+        [&](glm::dvec2 uv0, glm::vec2 P, double polar) {
+            const float cosPolar = static_cast<float>(std::cos(polar * std::numbers::pi / 180.0));
+            return godotDeepParallax(*config.field, WrapMode::Repeat, uv0, P, cosPolar,
+                                     advice->layers);
+        });
 }
 
 void EngineMarchTest::noLayerCountSaysWhatDoes() {
@@ -305,30 +320,13 @@ void EngineMarchTest::hdrpAdviceMeetsTheBudgetOnFreshRays() {
     QVERIFY(advice->layers.minLayers >= 1 && advice->layers.maxLayers >= 4);
     QVERIFY2(QString::fromStdString(advice->note).startsWith("HDRP parallax occlusion with "),
              advice->note.c_str());
-    const HeightField& field = *config.field;
-    TraceMaps maps;
-    maps.height = &field;
-    Result<Tracer> exact =
-        Tracer::create(maps, Technique::Exact, info(Technique::Exact).defaults, config.scale);
-    QVERIFY(exact.ok());
-    // Fresh rays of the test's own drawing against the exact hit of the relief's own ray.
-    std::mt19937 rng(1234);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    for (double polar : recommendationPolars(config.maxPolarDeg)) {
-        std::vector<double> errors;
-        for (double azimuth : config.azimuthDeg) {
-            const glm::vec2 P = parallaxVector(config.scale, polar, azimuth);
-            for (int k = 0; k < 2000; ++k) {
-                const glm::dvec2 uv0(uniform(rng), uniform(rng));
-                const TraceResult hit =
-                    hdrpParallaxOcclusion(field, WrapMode::Repeat, uv0, P, advice->layers);
-                errors.push_back(hitErrorTexels(hit, exact->trace(uv0, P), 64, 64));
-            }
-        }
-        const double p99 = nearestRankPercentile(errors, 0.99);
-        QVERIFY2(p99 <= config.budget.texels,
-                 qPrintable(QString("polar %1: p99 %2").arg(polar).arg(p99)));
-    }
+    // Against the exact hit of the relief's own ray.
+    checkFreshP99(
+        config, 1234,
+        [&](double polar, double azimuth) { return parallaxVector(config.scale, polar, azimuth); },
+        [&](glm::dvec2 uv0, glm::vec2 P, double) {
+            return hdrpParallaxOcclusion(*config.field, WrapMode::Repeat, uv0, P, advice->layers);
+        });
 }
 
 QTEST_GUILESS_MAIN(EngineMarchTest)
