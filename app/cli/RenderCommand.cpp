@@ -6,6 +6,7 @@
 #include "parallax/image/ImageFile.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/MaterialNames.h"
+#include "parallax/mesh/MeshLoader.h"
 #include "parallax/render/FrameTimer.h"
 #include "parallax/render/HeadlessContext.h"
 #include "parallax/render/Renderer.h"
@@ -38,6 +39,8 @@ struct RenderOptions {
     std::optional<float> softness;
     std::optional<float> tiling;
     std::string mesh = "plane";
+    std::optional<int> uvSet;
+    std::size_t maxTriangles = kDefaultMaxMeshTriangles;
     bool derivativeTbn = false;
     std::string size = "512x512";
     std::string light = "135,40";
@@ -204,7 +207,25 @@ int runRender(const RenderOptions& o) {
     Result<std::vector<float>> background = numbers(o.background, 4, "--background");
     if (!background)
         return fail(background.error().message);
-    const MeshKind mesh = *parseMeshKind(o.mesh);
+    // A built-in mesh by name, else a file; a loaded mesh is fitted into the unit sphere, framed
+    // as the sphere is.
+    const std::optional<MeshKind> builtIn = parseMeshKind(o.mesh);
+    if (builtIn && o.uvSet)
+        return fail("--uv-set applies to a mesh file, not the built-in " + o.mesh);
+    std::shared_ptr<const MeshData> loadedMesh;
+    if (!builtIn) {
+        MeshLoadOptions load;
+        load.uvSet = o.uvSet.value_or(0);
+        load.maxTriangles = o.maxTriangles;
+        Result<LoadedMesh> mesh = loadMesh(o.mesh, load);
+        if (!mesh)
+            return fail(mesh.error().message);
+        for (const std::string& note : mesh->notes)
+            std::cout << "note: " << note << "\n";
+        std::cout << "mesh: " << mesh->summary() << "\n";
+        loadedMesh = std::make_shared<const MeshData>(std::move(mesh->mesh));
+    }
+    const MeshKind mesh = builtIn.value_or(MeshKind::Sphere);
     OrbitCamera camera;
     camera.distance = defaultDistance(mesh);
     if (!o.camera.empty()) {
@@ -242,6 +263,7 @@ int runRender(const RenderOptions& o) {
     sun.elevationDeg = (*light)[1];
     DrawOptions options;
     options.mesh = mesh;
+    options.customMesh = loadedMesh;
     options.tbn = o.derivativeTbn ? TbnSource::Derivatives : TbnSource::VertexTangents;
     options.background = {(*background)[0], (*background)[1], (*background)[2], (*background)[3]};
     options.kernels = o.kernels.flavour();
@@ -325,9 +347,21 @@ Action addRenderCommand(CLI::App& app) {
         ->check(CLI::Range(0.0f, 1.0f));
     cmd->add_option("--tiling", o->tiling, "Texture repeats across the mesh")
         ->check(CLI::Range(0.001f, 1000.0f));
-    std::vector<std::string> meshes(meshKindNames().begin(), meshKindNames().end());
-    cmd->add_option("--mesh", o->mesh, "plane, cube, sphere or cylinder")
-        ->check(CLI::IsMember(meshes));
+    cmd->add_option("--mesh", o->mesh,
+                    "plane, cube, sphere, cylinder or a mesh file (.obj, .gltf, .glb)")
+        ->check(CLI::Validator(
+            [](const std::string& name) -> std::string {
+                if (parseMeshKind(name) || isMeshFile(name))
+                    return {};
+                return name + " is neither plane, cube, sphere, cylinder nor a .obj, .gltf or "
+                              ".glb file";
+            },
+            "MESH"));
+    cmd->add_option("--uv-set", o->uvSet, "The mesh file's uv set the material uses (default 0)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--max-triangles", o->maxTriangles,
+                    "Refuse mesh files with more triangles (default 2000000)")
+        ->check(CLI::PositiveNumber);
     cmd->add_flag("--derivative-tbn", o->derivativeTbn,
                   "Tangent frame from screen-space derivatives");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (or one number: square)");

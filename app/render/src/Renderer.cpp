@@ -14,10 +14,18 @@ Result<std::unique_ptr<Renderer>> Renderer::create() {
     return r;
 }
 
-const GpuMesh& Renderer::mesh(MeshKind kind) {
-    auto it = m_meshes.find(kind);
+const GpuMesh& Renderer::mesh(const DrawOptions& o) {
+    if (o.customMesh) {
+        // Holding the source keeps its address from being reused by another mesh.
+        if (m_customSource != o.customMesh) {
+            m_custom = GpuMesh::upload(*o.customMesh);
+            m_customSource = o.customMesh;
+        }
+        return m_custom;
+    }
+    auto it = m_meshes.find(o.mesh);
     if (it == m_meshes.end())
-        it = m_meshes.emplace(kind, GpuMesh::upload(makeMesh(kind))).first;
+        it = m_meshes.emplace(o.mesh, GpuMesh::upload(makeMesh(o.mesh))).first;
     return it->second;
 }
 
@@ -92,7 +100,7 @@ Status Renderer::draw(GpuMaterial& gpu, const Material& m, const OrbitCamera& ca
     glCullFace(GL_BACK);
     glDisable(GL_BLEND);
     p.use();
-    mesh(o.mesh).draw();
+    mesh(o).draw();
     glUseProgram(0);
     return checkGlError("drawing " + key.name());
 }

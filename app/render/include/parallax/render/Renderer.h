@@ -25,6 +25,9 @@ namespace px {
 
 struct DrawOptions {
     MeshKind mesh = MeshKind::Plane;
+    // A loaded mesh (parallax/mesh/MeshLoader.h) drawn instead of `mesh` when set; uploaded on
+    // first use and kept while this pointer is the one drawn.
+    std::shared_ptr<const MeshData> customMesh;
     TbnSource tbn = TbnSource::VertexTangents;
     ShaderOutput output = ShaderOutput::Color; // Color or Surface (hit data into a float target)
     // Production: the texture units filter, as an engine's shader would; Verify: the kernels
@@ -63,11 +66,13 @@ public:
 
 private:
     Renderer() = default;
-    const GpuMesh& mesh(MeshKind kind);
+    const GpuMesh& mesh(const DrawOptions& options);
 
     GlInfo m_info;
     ShaderCache m_shaders;
     std::map<MeshKind, GpuMesh> m_meshes;
+    std::shared_ptr<const MeshData> m_customSource; // what m_custom holds
+    GpuMesh m_custom;
 };
 
 } // namespace px
