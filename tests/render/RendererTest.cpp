@@ -188,6 +188,9 @@ void RendererTest::renderedHitsOnLoadedMeshes_data() {
     QTest::newRow("torus, its own tangents (glb)") << "torus-tangents.glb";
     QTest::newRow("non-uniformly scaled sphere (gltf)") << "scaled.gltf";
     QTest::newRow("mirrored sphere (obj)") << "mirrored.obj";
+    // The same torus through a uv set twice as dense: T and B half as long, the relief half as
+    // deep in the world.
+    QTest::newRow("torus, second uv set twice as dense (glb)") << "two-sets.glb";
 }
 
 // As above on a loaded mesh, with the mesh's own rays: each pixel's ray meets the nearest
@@ -198,12 +201,19 @@ void RendererTest::renderedHitsOnLoadedMeshes() {
     QFETCH(QString, name);
     QTemporaryDir dir;
     const std::string file = dir.filePath(name).toStdString();
-    test::TestMesh source =
-        name.startsWith("torus")    ? test::torus(32, 16, name.contains("tangents"), 20.0f)
-        : name.startsWith("scaled") ? test::scaled(test::seamedSphere(32, 16), {1.6f, 1.0f, 0.6f})
-                                    : test::mirroredSphere(32, 16);
+    test::TestMesh source = name.startsWith("torus") || name.startsWith("two-sets")
+                                ? test::torus(32, 16, name.contains("tangents"), 20.0f)
+                            : name.startsWith("scaled")
+                                ? test::scaled(test::seamedSphere(32, 16), {1.6f, 1.0f, 0.6f})
+                                : test::mirroredSphere(32, 16);
+    MeshLoadOptions load;
+    if (name.startsWith("two-sets")) {
+        for (const glm::vec2& uv : source.uvs)
+            source.uvs2.push_back(2.0f * uv);
+        load.uvSet = 1;
+    }
     QVERIFY(name.endsWith(".obj") ? test::writeObj(file, source) : test::writeGltf(file, source));
-    Result<LoadedMesh> loaded = loadMesh(file);
+    Result<LoadedMesh> loaded = loadMesh(file, load);
     QVERIFY(loaded.ok());
     auto mesh = std::make_shared<const MeshData>(loaded->mesh);
 
