@@ -7,8 +7,10 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
@@ -39,8 +41,12 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
     for (std::string_view name : meshKindNames())
         m_mesh->addItem(QString::fromUtf8(name.data(), static_cast<int>(name.size())),
                         static_cast<int>(parseMeshKind(name).value_or(MeshKind::Plane)));
+    m_builtIns = m_mesh->count();
     m_mesh->setToolTip(hints::mesh());
     m_mesh->setStatusTip(hints::mesh());
+    m_loadMesh = new QPushButton(tr("Load…"), this);
+    m_loadMesh->setToolTip(hints::loadMesh());
+    m_loadMesh->setStatusTip(hints::loadMesh());
     m_link = new QCheckBox(tr("Link viewports (camera and light)"), this);
     m_link->setToolTip(hints::linkViews());
     m_link->setStatusTip(hints::linkViews());
@@ -48,7 +54,10 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
     reset->setToolTip(tr("Back to the default orbit (Home)."));
 
     auto* form = new QFormLayout;
-    form->addRow(tr("Mesh"), m_mesh);
+    auto* meshRow = new QHBoxLayout;
+    meshRow->addWidget(m_mesh, 1);
+    meshRow->addWidget(m_loadMesh);
+    form->addRow(tr("Mesh"), meshRow);
     layout->addWidget(m_azimuth);
     layout->addWidget(m_elevation);
     layout->addWidget(m_viewAngle);
@@ -71,11 +80,8 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
         view.camera = withPolarAngle(view.camera, v);
         m_grid->editView(view);
     });
-    connect(m_mesh, &QComboBox::currentIndexChanged, this, [this](int i) {
-        SharedView view = m_grid->activeView();
-        view.mesh = static_cast<MeshKind>(m_mesh->itemData(i).toInt());
-        m_grid->editView(view);
-    });
+    connect(m_mesh, &QComboBox::currentIndexChanged, this, &ViewPanel::chooseMesh);
+    connect(m_loadMesh, &QPushButton::clicked, this, &ViewPanel::loadMeshRequested);
     connect(m_link, &QCheckBox::toggled, m_grid, &ViewportGrid::setLinked);
     connect(reset, &QPushButton::clicked, m_grid, &ViewportGrid::resetCameras);
     connect(m_grid, &ViewportGrid::viewEdited, this, &ViewPanel::refresh);
@@ -90,8 +96,42 @@ void ViewPanel::refresh() {
     m_elevation->setValue(view.light.elevationDeg);
     m_viewAngle->setValue(90.0 - view.camera.elevationDeg);
     const QSignalBlocker a(m_mesh), b(m_link);
-    m_mesh->setCurrentIndex(m_mesh->findData(static_cast<int>(view.mesh)));
+    if (view.meshData) {
+        if (m_mesh->findData(view.meshFile) < 0)
+            m_mesh->addItem(QFileInfo(view.meshFile).fileName(), view.meshFile);
+        m_mesh->setCurrentIndex(m_mesh->findData(view.meshFile));
+    } else {
+        m_mesh->setCurrentIndex(m_mesh->findData(static_cast<int>(view.mesh)));
+    }
     m_link->setChecked(m_grid->linked());
+}
+
+void ViewPanel::setRecentMeshes(const QStringList& files) {
+    {
+        const QSignalBlocker block(m_mesh);
+        while (m_mesh->count() > m_builtIns)
+            m_mesh->removeItem(m_builtIns);
+        for (const QString& file : files) {
+            m_mesh->addItem(QFileInfo(file).fileName(), file);
+            m_mesh->setItemData(m_mesh->count() - 1, file, Qt::ToolTipRole);
+        }
+    }
+    refresh();
+}
+
+void ViewPanel::chooseMesh(int index) {
+    if (index >= m_builtIns) {
+        const QString file = m_mesh->itemData(index).toString();
+        if (file != m_grid->activeView().meshFile || !m_grid->activeView().meshData)
+            emit meshFileChosen(file);
+        refresh(); // shows what is drawn: the new mesh once loaded, the old one if it failed
+        return;
+    }
+    SharedView view = m_grid->activeView();
+    view.mesh = static_cast<MeshKind>(m_mesh->itemData(index).toInt());
+    view.meshData.reset();
+    view.meshFile.clear();
+    m_grid->editView(view);
 }
 
 } // namespace px::studio

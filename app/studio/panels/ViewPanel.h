@@ -1,11 +1,14 @@
 #pragma once
-// Light and view: the directional light (also draggable in a view with Ctrl), the mesh, and
-// whether the viewports share camera and light. View settings: not saved with the material.
+// Light and view: the directional light (also draggable in a view with Ctrl), the mesh (a built-in
+// one, a recent mesh file or Load Mesh…), and whether the viewports share camera and light. View
+// settings: not saved with the material (a material's mesh is remembered in the editor's settings,
+// MainWindowMesh.cpp).
 
 #include <QWidget>
 
 class QCheckBox;
 class QComboBox;
+class QPushButton;
 
 namespace px::studio {
 
@@ -21,17 +24,30 @@ public:
     SliderField* lightElevation() const { return m_elevation; }
     SliderField* viewAngle() const { return m_viewAngle; } // the camera's polar angle
     QComboBox* mesh() const { return m_mesh; }
+    QPushButton* loadMeshButton() const { return m_loadMesh; }
     QCheckBox* link() const { return m_link; }
 
-private:
+    // The recent mesh files, newest first, listed after the built-in meshes.
+    void setRecentMeshes(const QStringList& files);
+
+signals:
+    void meshFileChosen(const QString& path); // a recent mesh picked: the window loads it
+    void loadMeshRequested();                 // Load Mesh…
+
+public slots:
     void refresh();
+
+private:
+    void chooseMesh(int index);
 
     ViewportGrid* m_grid;
     SliderField* m_azimuth;
     SliderField* m_elevation;
     SliderField* m_viewAngle;
     QComboBox* m_mesh;
+    QPushButton* m_loadMesh;
     QCheckBox* m_link;
+    int m_builtIns = 0; // the combo's first items
 };
 
 } // namespace px::studio

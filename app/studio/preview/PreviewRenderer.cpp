@@ -97,6 +97,7 @@ struct PreviewRenderer::Impl {
     DrawOptions options(const PreviewScene& scene) const {
         DrawOptions o;
         o.mesh = scene.view.mesh;
+        o.customMesh = scene.view.meshData;
         o.background = kBackground;
         return o;
     }

@@ -7,6 +7,9 @@
 #include "parallax/render/Mesh.h"   // parallax-render: MeshKind
 #include "parallax/trace/Technique.h"
 
+#include <QString>
+#include <memory>
+
 namespace px::studio {
 
 using px::DirectionalLight;
@@ -21,6 +24,9 @@ struct SharedView {
     OrbitCamera camera = defaultCamera();
     DirectionalLight light;
     MeshKind mesh = MeshKind::Plane;
+    // A loaded mesh file drawn instead of `mesh` (MeshLoader.h), and its path; null: `mesh`.
+    std::shared_ptr<const MeshData> meshData;
+    QString meshFile;
 };
 
 struct ViewOverlays {

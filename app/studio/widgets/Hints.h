@@ -28,6 +28,7 @@ QString lighting();
 QString lightAzimuth();
 QString lightElevation();
 QString mesh();
+QString loadMesh();
 QString linkViews();
 QString heatMap();
 QString wipe();

@@ -108,7 +108,10 @@ void MainWindow::createMenus() {
         action(this, tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E),
                tr("Export for the project's renderer, glTF, Godot, Unreal or Unity."));
     connect(exportAction, &QAction::triggered, this, &MainWindow::exportDialog);
-    file->addActions({folder, exportAction});
+    QAction* mesh = action(this, tr("Load &Mesh…"), QKeySequence(Qt::CTRL | Qt::Key_M),
+                           tr("Show the material on an OBJ or glTF mesh (.obj, .gltf, .glb)."));
+    connect(mesh, &QAction::triggered, this, &MainWindow::loadMeshDialog);
+    file->addActions({folder, mesh, exportAction});
     file->addSeparator();
     QAction* quit = action(this, tr("&Quit"), QKeySequence::Quit, tr("Close Parallax Studio."));
     connect(quit, &QAction::triggered, this, &QWidget::close);
