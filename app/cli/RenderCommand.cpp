@@ -4,6 +4,8 @@
 #include "CommonOptions.h"
 #include "parallax/eval/AutoTechnique.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/light/Environment.h"
+#include "parallax/light/EnvironmentLighting.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/MaterialNames.h"
 #include "parallax/mesh/MeshLoader.h"
@@ -46,6 +48,8 @@ struct RenderOptions {
     std::string light = "135,40";
     std::string camera;
     std::string background = "0,0,0,0";
+    std::string environment; // "sky" or a file
+    float exposure = 0.0f;
     int timeFrames = 0;
     KernelOptions kernels;
     std::string out;
@@ -204,9 +208,26 @@ int runRender(const RenderOptions& o) {
     Result<std::vector<float>> light = numbers(o.light, 2, "--light");
     if (!light)
         return fail(light.error().message);
-    Result<std::vector<float>> background = numbers(o.background, 4, "--background");
+    // The environment behind the mesh, or a colour.
+    const bool showEnvironment = o.background == "environment";
+    if (showEnvironment && o.environment.empty())
+        return fail("--background environment needs --environment FILE or sky");
+    Result<std::vector<float>> background =
+        showEnvironment ? Result<std::vector<float>>(std::vector<float>(4, 0.0f))
+                        : numbers(o.background, 4, "--background");
     if (!background)
         return fail(background.error().message);
+    std::optional<PrefilteredEnvironment> environment;
+    if (!o.environment.empty()) {
+        // The built-in sky puts its sun where the light is: the sun that shadows is in the sky.
+        Result<Image> map =
+            o.environment == "sky"
+                ? Result<Image>(makeSkyEnvironment(directionFromAngles((*light)[0], (*light)[1])))
+                : loadEnvironment(o.environment);
+        if (!map)
+            return fail(map.error().message);
+        environment = prefilterEnvironment(*map);
+    }
     // A built-in mesh by name, else a file; a loaded mesh is fitted into the unit sphere, framed
     // as the sphere is.
     const std::optional<MeshKind> builtIn = parseMeshKind(o.mesh);
@@ -261,7 +282,17 @@ int runRender(const RenderOptions& o) {
     DirectionalLight sun;
     sun.azimuthDeg = (*light)[0];
     sun.elevationDeg = (*light)[1];
+    std::unique_ptr<GpuEnvironment> gpuEnvironment;
+    if (environment) {
+        Result<std::unique_ptr<GpuEnvironment>> made = GpuEnvironment::create(*environment);
+        if (!made)
+            return fail(made.error().message);
+        gpuEnvironment = std::move(*made);
+    }
     DrawOptions options;
+    options.environment = gpuEnvironment.get();
+    options.exposure = o.exposure;
+    options.showEnvironment = showEnvironment;
     options.mesh = mesh;
     options.customMesh = loadedMesh;
     options.tbn = o.derivativeTbn ? TbnSource::Derivatives : TbnSource::VertexTangents;
@@ -369,7 +400,12 @@ Action addRenderCommand(CLI::App& app) {
     cmd->add_option("--camera", o->camera,
                     "Orbit camera AZIMUTH,ELEVATION,DISTANCE (degrees, world units)");
     cmd->add_option("--background", o->background,
-                    "Background R,G,B,A in [0,1] as stored (default transparent)");
+                    "Background R,G,B,A in [0,1] as stored (default transparent), or environment "
+                    "(the --environment behind the mesh)");
+    cmd->add_option("--environment", o->environment,
+                    "Image-based light: an equirectangular .hdr or .exr, or sky (built in)");
+    cmd->add_option("--exposure", o->exposure, "Exposure in stops (EV) under --environment")
+        ->check(CLI::Range(-20.0f, 20.0f));
     cmd->add_option("--time", o->timeFrames,
                     "Also time this many frames with each kernel flavour and print the medians "
                     "and their ratio")

@@ -6,9 +6,12 @@
 #include "StudioTestSupport.h"
 #include "TestMeshes.h"
 #include "panels/ViewPanel.h"
+#include "parallax/image/ImageFile.h"
 #include "parallax/mesh/MeshLoader.h"
+#include "widgets/SliderField.h"
 #include "window/RecentFiles.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFileInfo>
 #include <QPushButton>
@@ -138,6 +141,58 @@ private slots:
         QComboBox* combo = w->viewPanel()->mesh();
         combo->setCurrentIndex(combo->findText("cube"));
         QVERIFY(MainWindow::rememberedMesh(material).isEmpty());
+    }
+
+    // The sky lights the view (and shows behind it), exposure brightens it, hiding the sky
+    // brings the backdrop back, and a file that is no environment is a message naming it.
+    void environmentLightsTheView() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        const QImage plain = preview->grabFramebuffer();
+        QComboBox* environment = w->viewPanel()->environment();
+        environment->setCurrentIndex(environment->findData(QStringLiteral("sky")));
+        QVERIFY(preview->scene().view.environment);
+        QCOMPARE(preview->scene().view.environmentName, QString("sky"));
+        QVERIFY(waitForFigures(preview));
+        QVERIFY2(preview->renderError().isEmpty(), qPrintable(preview->renderError()));
+        const QImage sky = preview->grabFramebuffer();
+        QVERIFY(changedPixels(plain, sky) > sky.width() * sky.height() / 4);
+        QVERIFY(preview->stats().pixels > 0); // the error readout goes on
+
+        w->viewPanel()->exposure()->setValue(1.5);
+        emit w->viewPanel()->exposure()->valueEdited(1.5);
+        QCOMPARE(preview->scene().view.exposure, 1.5f);
+        QVERIFY(waitForFigures(preview));
+        const QImage brighter = preview->grabFramebuffer();
+        double before = 0.0, after = 0.0;
+        // The panel's re-layout may resize the view by a few pixels: compare what both cover.
+        const int width = std::min(sky.width(), brighter.width());
+        const int height = std::min(sky.height(), brighter.height());
+        for (int y = 0; y < height; y += 4)
+            for (int x = 0; x < width; x += 4) {
+                before += qGray(sky.pixel(x, y));
+                after += qGray(brighter.pixel(x, y));
+            }
+        QVERIFY2(after > before * 1.1, qPrintable(QString("%1 -> %2").arg(before).arg(after)));
+
+        w->viewPanel()->showEnvironment()->setChecked(false);
+        QVERIFY(!preview->scene().view.showEnvironment);
+        QVERIFY(waitForFigures(preview));
+        const QImage hidden = preview->grabFramebuffer();
+        QCOMPARE(hidden.pixel(2, 2), plain.pixel(2, 2)); // the corner: the backdrop again
+
+        const QString square = m_dir.filePath("square.exr");
+        ImageWriteOptions exr;
+        exr.format = PixelFormat::Half;
+        QVERIFY(writeImage(square.toStdString(), Image(16, 16, 3), exr).ok());
+        QVERIFY(!w->setEnvironment(square));
+        QVERIFY2(w->lastProblem().startsWith(square + ": is 16 x 16"),
+                 qPrintable(w->lastProblem()));
+        QCOMPARE(preview->scene().view.environmentName, QString("sky"));
+        environment->setCurrentIndex(0); // none
+        QVERIFY(!preview->scene().view.environment);
     }
 };
 

@@ -47,6 +47,16 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
     m_loadMesh = new QPushButton(tr("Load…"), this);
     m_loadMesh->setToolTip(hints::loadMesh());
     m_loadMesh->setStatusTip(hints::loadMesh());
+    m_environment = new QComboBox(this);
+    m_environment->addItem(tr("none (light and ambient)"), QString());
+    m_environment->addItem(tr("sky (built in)"), QStringLiteral("sky"));
+    m_environment->addItem(tr("Load HDR/EXR…"), QStringLiteral("load"));
+    m_environment->setToolTip(hints::environment());
+    m_environment->setStatusTip(hints::environment());
+    m_exposure = new SliderField(tr("Exposure"), {-4, 4, -10, 10, 1, 0.1}, this);
+    m_exposure->setSuffix(tr(" EV"));
+    m_exposure->setHint(tr("Exposure in stops under the environment, before the filmic tone map."));
+    m_showEnvironment = new QCheckBox(tr("Show the environment behind"), this);
     m_link = new QCheckBox(tr("Link viewports (camera and light)"), this);
     m_link->setToolTip(hints::linkViews());
     m_link->setStatusTip(hints::linkViews());
@@ -58,10 +68,13 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
     meshRow->addWidget(m_mesh, 1);
     meshRow->addWidget(m_loadMesh);
     form->addRow(tr("Mesh"), meshRow);
+    form->addRow(tr("Environment"), m_environment);
     layout->addWidget(m_azimuth);
     layout->addWidget(m_elevation);
     layout->addWidget(m_viewAngle);
     layout->addLayout(form);
+    layout->addWidget(m_exposure);
+    layout->addWidget(m_showEnvironment);
     layout->addWidget(m_link);
     layout->addWidget(reset);
 
@@ -82,6 +95,24 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
     });
     connect(m_mesh, &QComboBox::currentIndexChanged, this, &ViewPanel::chooseMesh);
     connect(m_loadMesh, &QPushButton::clicked, this, &ViewPanel::loadMeshRequested);
+    connect(m_environment, &QComboBox::currentIndexChanged, this, [this](int i) {
+        const QString source = m_environment->itemData(i).toString();
+        if (source == QLatin1String("load"))
+            emit loadEnvironmentRequested();
+        else if (source != m_grid->activeView().environmentName)
+            emit environmentChosen(source);
+        refresh(); // what is drawn: the new environment once made, the old one if it failed
+    });
+    connect(m_exposure, &SliderField::valueEdited, this, [this](double v) {
+        SharedView view = m_grid->activeView();
+        view.exposure = static_cast<float>(v);
+        m_grid->editView(view);
+    });
+    connect(m_showEnvironment, &QCheckBox::toggled, this, [this](bool on) {
+        SharedView view = m_grid->activeView();
+        view.showEnvironment = on;
+        m_grid->editView(view);
+    });
     connect(m_link, &QCheckBox::toggled, m_grid, &ViewportGrid::setLinked);
     connect(reset, &QPushButton::clicked, m_grid, &ViewportGrid::resetCameras);
     connect(m_grid, &ViewportGrid::viewEdited, this, &ViewPanel::refresh);
@@ -104,6 +135,18 @@ void ViewPanel::refresh() {
         m_mesh->setCurrentIndex(m_mesh->findData(static_cast<int>(view.mesh)));
     }
     m_link->setChecked(m_grid->linked());
+    const QSignalBlocker c(m_environment), d(m_showEnvironment);
+    int environment = m_environment->findData(view.environmentName);
+    if (environment < 0) { // a file: listed before Load…
+        m_environment->insertItem(m_environment->count() - 1,
+                                  QFileInfo(view.environmentName).fileName(), view.environmentName);
+        environment = m_environment->findData(view.environmentName);
+    }
+    m_environment->setCurrentIndex(environment);
+    m_exposure->setValue(view.exposure);
+    m_showEnvironment->setChecked(view.showEnvironment);
+    m_exposure->setEnabled(static_cast<bool>(view.environment));
+    m_showEnvironment->setEnabled(static_cast<bool>(view.environment));
 }
 
 void ViewPanel::setRecentMeshes(const QStringList& files) {

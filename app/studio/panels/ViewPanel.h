@@ -26,6 +26,9 @@ public:
     QComboBox* mesh() const { return m_mesh; }
     QPushButton* loadMeshButton() const { return m_loadMesh; }
     QCheckBox* link() const { return m_link; }
+    QComboBox* environment() const { return m_environment; }
+    SliderField* exposure() const { return m_exposure; }
+    QCheckBox* showEnvironment() const { return m_showEnvironment; }
 
     // The recent mesh files, newest first, listed after the built-in meshes.
     void setRecentMeshes(const QStringList& files);
@@ -33,6 +36,9 @@ public:
 signals:
     void meshFileChosen(const QString& path); // a recent mesh picked: the window loads it
     void loadMeshRequested();                 // Load Mesh…
+    // "" (none), "sky" or Load… picked in the environment list: the window makes it.
+    void environmentChosen(const QString& source);
+    void loadEnvironmentRequested();
 
 public slots:
     void refresh();
@@ -47,6 +53,9 @@ private:
     QComboBox* m_mesh;
     QPushButton* m_loadMesh;
     QCheckBox* m_link;
+    QComboBox* m_environment;
+    SliderField* m_exposure;
+    QCheckBox* m_showEnvironment;
     int m_builtIns = 0; // the combo's first items
 };
 

@@ -92,6 +92,11 @@ QString lightElevation() {
 QString mesh() {
     return QObject::tr("The shape the material is shown on: a built-in one or a recent mesh file.");
 }
+QString environment() {
+    return QObject::tr("Light from a whole sky: the built-in one (its sun where the light is when "
+                       "chosen) or an equirectangular HDR/EXR. The light stays as the sun and "
+                       "casts the relief's shadows.");
+}
 QString loadMesh() {
     return QObject::tr("Show the material on your own mesh: OBJ or glTF (.obj, .gltf, .glb), also "
                        "by dropping the file on the window. Remembered for this material.");

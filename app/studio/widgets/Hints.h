@@ -29,6 +29,7 @@ QString lightAzimuth();
 QString lightElevation();
 QString mesh();
 QString loadMesh();
+QString environment();
 QString linkViews();
 QString heatMap();
 QString wipe();

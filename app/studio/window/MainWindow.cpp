@@ -86,6 +86,9 @@ MainWindow::MainWindow(const QString& liveReason, QWidget* parent)
     m_viewPanel->setRecentMeshes(m_recentMeshes->files());
     connect(m_viewPanel, &ViewPanel::meshFileChosen, this, &MainWindow::loadMesh);
     connect(m_viewPanel, &ViewPanel::loadMeshRequested, this, &MainWindow::loadMeshDialog);
+    connect(m_viewPanel, &ViewPanel::environmentChosen, this, &MainWindow::setEnvironment);
+    connect(m_viewPanel, &ViewPanel::loadEnvironmentRequested, this,
+            &MainWindow::loadEnvironmentDialog);
     connect(m_viewports, &ViewportGrid::viewEdited, this, &MainWindow::rememberMaterialMesh);
     updateRecentMenu();
     updateTitle();

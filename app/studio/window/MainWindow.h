@@ -74,6 +74,10 @@ public:
     // naming the file and keeps the mesh drawn before.
     bool loadMesh(const QString& path);
     RecentFiles* recentMeshes() const { return m_recentMeshes; }
+    // Image-based light in the active viewport (all while linked): "" none, "sky" the built-in one
+    // (its sun where the light is now), else an HDR/EXR file; made in the background. A failure
+    // shows a message naming the file and keeps the environment drawn before.
+    bool setEnvironment(const QString& source);
     // The mesh file remembered for a material file, or empty.
     static QString rememberedMesh(const QString& materialPath);
     // The last import's summary (hidden when not interactive; tests read and click it).
@@ -121,6 +125,7 @@ private:
     void importMapDialog(MapKind kind);
     void importFolderDialog();
     void loadMeshDialog();
+    void loadEnvironmentDialog();
     void rememberMaterialMesh();
     void restoreMaterialMesh();
     void exportDialog();
