@@ -4,6 +4,7 @@
 #include "CommonOptions.h"
 #include "parallax/eval/AutoTechnique.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/image/ImageSet.h"
 #include "parallax/light/Environment.h"
 #include "parallax/light/EnvironmentLighting.h"
 #include "parallax/material/MaterialFile.h"
@@ -15,12 +16,15 @@
 #include "parallax/shader/VariantKey.h"
 #include "parallax/trace/Tracer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace px::cli {
 
@@ -51,6 +55,7 @@ struct RenderOptions {
     std::string environment; // "sky" or a file
     float exposure = 0.0f;
     int timeFrames = 0;
+    int turntable = 0; // frames around the mesh; 0: one picture
     KernelOptions kernels;
     std::string out;
 };
@@ -298,12 +303,31 @@ int runRender(const RenderOptions& o) {
     options.tbn = o.derivativeTbn ? TbnSource::Derivatives : TbnSource::VertexTangents;
     options.background = {(*background)[0], (*background)[1], (*background)[2], (*background)[3]};
     options.kernels = o.kernels.flavour();
-    Result<Image> image = (*renderer)->renderImage(**gpu, *material, camera, sun, options, *size);
-    if (!image)
-        return fail(image.error().message);
     ImageWriteOptions write;
     write.format = PixelFormat::UInt8;
     write.srgb = true;
+    if (o.turntable > 0) {
+        // The camera orbits once, the light and environment stay: OUT-000.png, OUT-001.png, ...
+        // written as one set (ImageSet.h): a failure leaves the previous frames as they were.
+        const std::vector<std::string> frames = numberedFiles(o.out, o.turntable);
+        const Status written = writeImageSet(
+            frames,
+            [&](int i) {
+                OrbitCamera turned = camera;
+                turned.azimuthDeg = camera.azimuthDeg + 360.0f * static_cast<float>(i) /
+                                                            static_cast<float>(o.turntable);
+                return (*renderer)->renderImage(**gpu, *material, turned, sun, options, *size);
+            },
+            write);
+        if (!written)
+            return fail(written.error().message);
+        std::printf("wrote %d turntable frames: %s ... %s\n", o.turntable, frames.front().c_str(),
+                    frames.back().c_str());
+        return 0;
+    }
+    Result<Image> image = (*renderer)->renderImage(**gpu, *material, camera, sun, options, *size);
+    if (!image)
+        return fail(image.error().message);
     if (Status s = writeImage(o.out, *image, write); !s)
         return fail(s.error().message);
     if (o.timeFrames > 0) {
@@ -410,6 +434,9 @@ Action addRenderCommand(CLI::App& app) {
                     "Also time this many frames with each kernel flavour and print the medians "
                     "and their ratio")
         ->check(CLI::Range(1, 10000));
+    cmd->add_option("--turntable", o->turntable,
+                    "Render this many frames with the camera orbiting once: OUT-000.png, ...")
+        ->check(CLI::Range(1, 3600));
     o->kernels.addTo(*cmd);
     cmd->add_option("--out", o->out, "Output image (.png)")->required();
     return [o] { return runRender(*o); };

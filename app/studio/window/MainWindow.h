@@ -78,6 +78,12 @@ public:
     // (its sun where the light is now), else an HDR/EXR file; made in the background. A failure
     // shows a message naming the file and keeps the environment drawn before.
     bool setEnvironment(const QString& source);
+    // Pictures out (MainWindowPictures.cpp), rendered offscreen at `size` pixels per view without
+    // the overlays, written atomically as PNG: the active view, or every shown view side by side
+    // as the grid places them; a turntable of the active view, the camera orbiting once in
+    // `frames` steps, FILE-000.png ... written as one set (a failure keeps the previous set).
+    bool saveViewImage(const QString& file, QSize size, bool allViews);
+    bool saveTurntable(const QString& file, QSize size, int frames);
     // The mesh file remembered for a material file, or empty.
     static QString rememberedMesh(const QString& materialPath);
     // The last import's summary (hidden when not interactive; tests read and click it).
@@ -126,6 +132,8 @@ private:
     void importFolderDialog();
     void loadMeshDialog();
     void loadEnvironmentDialog();
+    enum class PictureKind { ActiveView, AllViews, Turntable };
+    void picturesDialog(PictureKind kind);
     void rememberMaterialMesh();
     void restoreMaterialMesh();
     void exportDialog();
