@@ -15,6 +15,7 @@
 #include <QComboBox>
 #include <QFileInfo>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <limits>
 
@@ -115,6 +116,32 @@ private slots:
         QCOMPARE(w->viewPanel()->mesh()->currentText(), QString("sphere.obj"));
         QVERIFY(!w->loadMesh(m_dir.filePath("missing.gltf")));
         QCOMPARE(w->lastProblem(), m_dir.filePath("missing.gltf") + ": no such file");
+    }
+
+    // A file with two uv sets: the uv spin box offers both and reads the mesh again with the one
+    // chosen (the second repeats the texture twice as often).
+    void uvSetIsChosen() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        px::test::TestMesh torus = px::test::torus(16, 8, false);
+        for (const glm::vec2& uv : torus.uvs)
+            torus.uvs2.push_back(2.0f * uv);
+        const QString file = write("two-sets.glb", torus);
+        QSpinBox* uvSet = w->viewPanel()->uvSet();
+        QVERIFY(!uvSet->isEnabled()); // the built-in plane has one
+        QVERIFY(w->loadMesh(file));
+        QVERIFY(uvSet->isEnabled());
+        QCOMPARE(uvSet->maximum(), 1);
+        const std::shared_ptr<const MeshData> first = w->viewports()->activeView().meshData;
+        uvSet->setValue(1);
+        const SharedView& view = w->viewports()->activeView();
+        QCOMPARE(view.meshUvSet, 1);
+        QVERIFY(view.meshData != first);
+        QCOMPARE(view.meshData->vertices.size(), first->vertices.size());
+        for (std::size_t i = 0; i < first->vertices.size(); ++i)
+            QVERIFY(glm::length(view.meshData->vertices[i].uv - 2.0f * first->vertices[i].uv) <
+                    1e-5f);
+        QVERIFY(w->statusBar()->currentMessage().contains("uv set 1 of 2"));
     }
 
     // The mesh belongs to the editor's settings for the material file, not to the file.

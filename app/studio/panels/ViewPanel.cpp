@@ -13,7 +13,9 @@
 #include <QHBoxLayout>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace px::studio {
 
@@ -47,6 +49,9 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
     m_loadMesh = new QPushButton(tr("Load…"), this);
     m_loadMesh->setToolTip(hints::loadMesh());
     m_loadMesh->setStatusTip(hints::loadMesh());
+    m_uvSet = new QSpinBox(this);
+    m_uvSet->setPrefix(tr("uv "));
+    m_uvSet->setToolTip(tr("The mesh file's uv set the material uses (files with several)."));
     m_environment = new QComboBox(this);
     m_environment->addItem(tr("none (light and ambient)"), QString());
     m_environment->addItem(tr("sky (built in)"), QStringLiteral("sky"));
@@ -66,6 +71,7 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
     auto* form = new QFormLayout;
     auto* meshRow = new QHBoxLayout;
     meshRow->addWidget(m_mesh, 1);
+    meshRow->addWidget(m_uvSet);
     meshRow->addWidget(m_loadMesh);
     form->addRow(tr("Mesh"), meshRow);
     form->addRow(tr("Environment"), m_environment);
@@ -95,6 +101,11 @@ ViewPanel::ViewPanel(ViewportGrid* grid, QWidget* parent) : QWidget(parent), m_g
     });
     connect(m_mesh, &QComboBox::currentIndexChanged, this, &ViewPanel::chooseMesh);
     connect(m_loadMesh, &QPushButton::clicked, this, &ViewPanel::loadMeshRequested);
+    connect(m_uvSet, &QSpinBox::valueChanged, this, [this](int set) {
+        if (set != m_grid->activeView().meshUvSet)
+            emit meshUvSetChosen(set);
+        refresh();
+    });
     connect(m_environment, &QComboBox::currentIndexChanged, this, [this](int i) {
         const QString source = m_environment->itemData(i).toString();
         if (source == QLatin1String("load"))
@@ -135,7 +146,10 @@ void ViewPanel::refresh() {
         m_mesh->setCurrentIndex(m_mesh->findData(static_cast<int>(view.mesh)));
     }
     m_link->setChecked(m_grid->linked());
-    const QSignalBlocker c(m_environment), d(m_showEnvironment);
+    const QSignalBlocker c(m_environment), d(m_showEnvironment), e(m_uvSet);
+    m_uvSet->setRange(0, view.meshData ? std::max(0, view.meshUvSets - 1) : 0);
+    m_uvSet->setValue(view.meshData ? view.meshUvSet : 0);
+    m_uvSet->setEnabled(view.meshData && view.meshUvSets > 1);
     int environment = m_environment->findData(view.environmentName);
     if (environment < 0) { // a file: listed before Load…
         m_environment->insertItem(m_environment->count() - 1,

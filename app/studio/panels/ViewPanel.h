@@ -9,6 +9,7 @@
 class QCheckBox;
 class QComboBox;
 class QPushButton;
+class QSpinBox;
 
 namespace px::studio {
 
@@ -25,6 +26,7 @@ public:
     SliderField* viewAngle() const { return m_viewAngle; } // the camera's polar angle
     QComboBox* mesh() const { return m_mesh; }
     QPushButton* loadMeshButton() const { return m_loadMesh; }
+    QSpinBox* uvSet() const { return m_uvSet; }
     QCheckBox* link() const { return m_link; }
     QComboBox* environment() const { return m_environment; }
     SliderField* exposure() const { return m_exposure; }
@@ -36,6 +38,7 @@ public:
 signals:
     void meshFileChosen(const QString& path); // a recent mesh picked: the window loads it
     void loadMeshRequested();                 // Load Mesh…
+    void meshUvSetChosen(int set);            // read the mesh file again with this uv set
     // "" (none), "sky" or Load… picked in the environment list: the window makes it.
     void environmentChosen(const QString& source);
     void loadEnvironmentRequested();
@@ -52,6 +55,7 @@ private:
     SliderField* m_viewAngle;
     QComboBox* m_mesh;
     QPushButton* m_loadMesh;
+    QSpinBox* m_uvSet;
     QCheckBox* m_link;
     QComboBox* m_environment;
     SliderField* m_exposure;

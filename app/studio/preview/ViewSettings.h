@@ -28,6 +28,8 @@ struct SharedView {
     // A loaded mesh file drawn instead of `mesh` (MeshLoader.h), and its path; null: `mesh`.
     std::shared_ptr<const MeshData> meshData;
     QString meshFile;
+    int meshUvSet = 0;  // the file's uv set read
+    int meshUvSets = 1; // how many it has
     // Image-based light (docs/lighting.md), prefiltered; null: the light's ambient fill. Its
     // name is "sky" (the built-in one, its sun where the light was when chosen) or the file.
     std::shared_ptr<const PrefilteredEnvironment> environment;

@@ -84,7 +84,10 @@ MainWindow::MainWindow(const QString& liveReason, QWidget* parent)
     connect(m_recentMeshes, &RecentFiles::changed, this,
             [this] { m_viewPanel->setRecentMeshes(m_recentMeshes->files()); });
     m_viewPanel->setRecentMeshes(m_recentMeshes->files());
-    connect(m_viewPanel, &ViewPanel::meshFileChosen, this, &MainWindow::loadMesh);
+    connect(m_viewPanel, &ViewPanel::meshFileChosen, this,
+            [this](const QString& path) { loadMesh(path); });
+    connect(m_viewPanel, &ViewPanel::meshUvSetChosen, this,
+            [this](int set) { loadMesh(m_viewports->activeView().meshFile, set); });
     connect(m_viewPanel, &ViewPanel::loadMeshRequested, this, &MainWindow::loadMeshDialog);
     connect(m_viewPanel, &ViewPanel::environmentChosen, this, &MainWindow::setEnvironment);
     connect(m_viewPanel, &ViewPanel::loadEnvironmentRequested, this,

@@ -72,7 +72,7 @@ public:
     // recent meshes and remembered for the material in the editor's settings (not in the material
     // file: the mesh is how this editor previews it, not part of it). A failure shows a message
     // naming the file and keeps the mesh drawn before.
-    bool loadMesh(const QString& path);
+    bool loadMesh(const QString& path, int uvSet = 0);
     RecentFiles* recentMeshes() const { return m_recentMeshes; }
     // Image-based light in the active viewport (all while linked): "" none, "sky" the built-in one
     // (its sun where the light is now), else an HDR/EXR file; made in the background. A failure

@@ -35,15 +35,16 @@ QString MainWindow::rememberedMesh(const QString& materialPath) {
     return QSettings().value(meshKey(materialPath)).toString();
 }
 
-bool MainWindow::loadMesh(const QString& path) {
+bool MainWindow::loadMesh(const QString& path, int uvSet) {
     // The worker reports progress through `progress` and stops at its next report once `stop` is
     // set (a cancelled load's result is dropped anyway: this only spares the work).
     auto progress = std::make_shared<std::atomic<float>>(0.0f);
     auto stop = std::make_shared<std::atomic<bool>>(false);
     Result<LoadedMesh> loaded = runInBackground<LoadedMesh>(
         this, tr("Loading %1…").arg(QFileInfo(path).fileName()),
-        [file = path.toStdString(), progress, stop] {
+        [file = path.toStdString(), uvSet, progress, stop] {
             MeshLoadOptions options;
+            options.uvSet = uvSet;
             options.progress = [progress, stop](float f) {
                 progress->store(f);
                 return !stop->load();
@@ -64,6 +65,8 @@ bool MainWindow::loadMesh(const QString& path) {
     SharedView view = m_viewports->activeView();
     view.meshData = std::make_shared<const MeshData>(std::move(loaded->mesh));
     view.meshFile = QFileInfo(path).absoluteFilePath();
+    view.meshUvSet = loaded->uvSet;
+    view.meshUvSets = loaded->uvSets;
     m_viewports->editView(view);
     m_recentMeshes->add(path);
     QString message = QString::fromStdString(loaded->summary());
