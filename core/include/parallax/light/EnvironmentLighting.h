@@ -3,8 +3,8 @@
 // the specular integral under GGX is split into the environment prefiltered per roughness and a
 // 2D table of the BRDF's scale and bias on F0; diffuse light is the irradiance, kept as nine
 // spherical-harmonic coefficients (Ramamoorthi and Hanrahan, "An Efficient Representation for
-// Irradiance Environment Maps", 2001). Computed here on the CPU once per environment (about 0.1 s
-// at the default sizes), uploaded by the renderer; shaders/render/lighting.glsl reads them.
+// Irradiance Environment Maps", 2001). Computed here on the CPU once per environment, uploaded
+// by the renderer; shaders/render/lighting.glsl reads them.
 
 #include "parallax/image/Image.h"
 
