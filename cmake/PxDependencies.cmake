@@ -16,6 +16,8 @@ find_package(nlohmann_json 3.10 CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(TBB CONFIG REQUIRED)
 find_package(Threads REQUIRED)
+# Assimp reads the artist's meshes (OBJ, glTF 2.0) for the preview (core/src/mesh).
+find_package(assimp CONFIG REQUIRED)
 # libpng: the core checks a PNG's data with its own error handler; the tests decode exported PNGs
 # the way engines do (gamma-aware).
 find_package(PNG REQUIRED)

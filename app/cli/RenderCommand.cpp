@@ -4,20 +4,27 @@
 #include "CommonOptions.h"
 #include "parallax/eval/AutoTechnique.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/image/ImageSet.h"
+#include "parallax/light/Environment.h"
+#include "parallax/light/EnvironmentLighting.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/MaterialNames.h"
+#include "parallax/mesh/MeshLoader.h"
 #include "parallax/render/FrameTimer.h"
 #include "parallax/render/HeadlessContext.h"
 #include "parallax/render/Renderer.h"
 #include "parallax/shader/VariantKey.h"
 #include "parallax/trace/Tracer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace px::cli {
 
@@ -38,12 +45,17 @@ struct RenderOptions {
     std::optional<float> softness;
     std::optional<float> tiling;
     std::string mesh = "plane";
+    std::optional<int> uvSet;
+    std::size_t maxTriangles = kDefaultMaxMeshTriangles;
     bool derivativeTbn = false;
     std::string size = "512x512";
     std::string light = "135,40";
     std::string camera;
     std::string background = "0,0,0,0";
+    std::string environment; // "sky" or a file
+    float exposure = 0.0f;
     int timeFrames = 0;
+    int turntable = 0; // frames around the mesh; 0: one picture
     KernelOptions kernels;
     std::string out;
 };
@@ -201,10 +213,45 @@ int runRender(const RenderOptions& o) {
     Result<std::vector<float>> light = numbers(o.light, 2, "--light");
     if (!light)
         return fail(light.error().message);
-    Result<std::vector<float>> background = numbers(o.background, 4, "--background");
+    // The environment behind the mesh, or a colour.
+    const bool showEnvironment = o.background == "environment";
+    if (showEnvironment && o.environment.empty())
+        return fail("--background environment needs --environment FILE or sky");
+    Result<std::vector<float>> background =
+        showEnvironment ? Result<std::vector<float>>(std::vector<float>(4, 0.0f))
+                        : numbers(o.background, 4, "--background");
     if (!background)
         return fail(background.error().message);
-    const MeshKind mesh = *parseMeshKind(o.mesh);
+    std::optional<PrefilteredEnvironment> environment;
+    if (!o.environment.empty()) {
+        // The built-in sky puts its sun where the light is: the sun that shadows is in the sky.
+        Result<Image> map =
+            o.environment == "sky"
+                ? Result<Image>(makeSkyEnvironment(directionFromAngles((*light)[0], (*light)[1])))
+                : loadEnvironment(o.environment);
+        if (!map)
+            return fail(map.error().message);
+        environment = prefilterEnvironment(*map);
+    }
+    // A built-in mesh by name, else a file; a loaded mesh is fitted into the unit sphere, framed
+    // as the sphere is.
+    const std::optional<MeshKind> builtIn = parseMeshKind(o.mesh);
+    if (builtIn && o.uvSet)
+        return fail("--uv-set applies to a mesh file, not the built-in " + o.mesh);
+    std::shared_ptr<const MeshData> loadedMesh;
+    if (!builtIn) {
+        MeshLoadOptions load;
+        load.uvSet = o.uvSet.value_or(0);
+        load.maxTriangles = o.maxTriangles;
+        Result<LoadedMesh> mesh = loadMesh(o.mesh, load);
+        if (!mesh)
+            return fail(mesh.error().message);
+        for (const std::string& note : mesh->notes)
+            std::cout << "note: " << note << "\n";
+        std::cout << "mesh: " << mesh->summary() << "\n";
+        loadedMesh = std::make_shared<const MeshData>(std::move(mesh->mesh));
+    }
+    const MeshKind mesh = builtIn.value_or(MeshKind::Sphere);
     OrbitCamera camera;
     camera.distance = defaultDistance(mesh);
     if (!o.camera.empty()) {
@@ -240,17 +287,47 @@ int runRender(const RenderOptions& o) {
     DirectionalLight sun;
     sun.azimuthDeg = (*light)[0];
     sun.elevationDeg = (*light)[1];
+    std::unique_ptr<GpuEnvironment> gpuEnvironment;
+    if (environment) {
+        Result<std::unique_ptr<GpuEnvironment>> made = GpuEnvironment::create(*environment);
+        if (!made)
+            return fail(made.error().message);
+        gpuEnvironment = std::move(*made);
+    }
     DrawOptions options;
+    options.environment = gpuEnvironment.get();
+    options.exposure = o.exposure;
+    options.showEnvironment = showEnvironment;
     options.mesh = mesh;
+    options.customMesh = loadedMesh;
     options.tbn = o.derivativeTbn ? TbnSource::Derivatives : TbnSource::VertexTangents;
     options.background = {(*background)[0], (*background)[1], (*background)[2], (*background)[3]};
     options.kernels = o.kernels.flavour();
-    Result<Image> image = (*renderer)->renderImage(**gpu, *material, camera, sun, options, *size);
-    if (!image)
-        return fail(image.error().message);
     ImageWriteOptions write;
     write.format = PixelFormat::UInt8;
     write.srgb = true;
+    if (o.turntable > 0) {
+        // The camera orbits once, the light and environment stay: OUT-000.png, OUT-001.png, ...
+        // written as one set (ImageSet.h): a failure leaves the previous frames as they were.
+        const std::vector<std::string> frames = numberedFiles(o.out, o.turntable);
+        const Status written = writeImageSet(
+            frames,
+            [&](int i) {
+                OrbitCamera turned = camera;
+                turned.azimuthDeg = camera.azimuthDeg + 360.0f * static_cast<float>(i) /
+                                                            static_cast<float>(o.turntable);
+                return (*renderer)->renderImage(**gpu, *material, turned, sun, options, *size);
+            },
+            write);
+        if (!written)
+            return fail(written.error().message);
+        std::printf("wrote %d turntable frames: %s ... %s\n", o.turntable, frames.front().c_str(),
+                    frames.back().c_str());
+        return 0;
+    }
+    Result<Image> image = (*renderer)->renderImage(**gpu, *material, camera, sun, options, *size);
+    if (!image)
+        return fail(image.error().message);
     if (Status s = writeImage(o.out, *image, write); !s)
         return fail(s.error().message);
     if (o.timeFrames > 0) {
@@ -325,9 +402,21 @@ Action addRenderCommand(CLI::App& app) {
         ->check(CLI::Range(0.0f, 1.0f));
     cmd->add_option("--tiling", o->tiling, "Texture repeats across the mesh")
         ->check(CLI::Range(0.001f, 1000.0f));
-    std::vector<std::string> meshes(meshKindNames().begin(), meshKindNames().end());
-    cmd->add_option("--mesh", o->mesh, "plane, cube, sphere or cylinder")
-        ->check(CLI::IsMember(meshes));
+    cmd->add_option("--mesh", o->mesh,
+                    "plane, cube, sphere, cylinder or a mesh file (.obj, .gltf, .glb)")
+        ->check(CLI::Validator(
+            [](const std::string& name) -> std::string {
+                if (parseMeshKind(name) || isMeshFile(name))
+                    return {};
+                return name + " is neither plane, cube, sphere, cylinder nor a .obj, .gltf or "
+                              ".glb file";
+            },
+            "MESH"));
+    cmd->add_option("--uv-set", o->uvSet, "The mesh file's uv set the material uses (default 0)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--max-triangles", o->maxTriangles,
+                    "Refuse mesh files with more triangles (default 2000000)")
+        ->check(CLI::PositiveNumber);
     cmd->add_flag("--derivative-tbn", o->derivativeTbn,
                   "Tangent frame from screen-space derivatives");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (or one number: square)");
@@ -335,11 +424,19 @@ Action addRenderCommand(CLI::App& app) {
     cmd->add_option("--camera", o->camera,
                     "Orbit camera AZIMUTH,ELEVATION,DISTANCE (degrees, world units)");
     cmd->add_option("--background", o->background,
-                    "Background R,G,B,A in [0,1] as stored (default transparent)");
+                    "Background R,G,B,A in [0,1] as stored (default transparent), or environment "
+                    "(the --environment behind the mesh)");
+    cmd->add_option("--environment", o->environment,
+                    "Image-based light: an equirectangular .hdr or .exr, or sky (built in)");
+    cmd->add_option("--exposure", o->exposure, "Exposure in stops (EV) under --environment")
+        ->check(CLI::Range(-20.0f, 20.0f));
     cmd->add_option("--time", o->timeFrames,
                     "Also time this many frames with each kernel flavour and print the medians "
                     "and their ratio")
         ->check(CLI::Range(1, 10000));
+    cmd->add_option("--turntable", o->turntable,
+                    "Render this many frames with the camera orbiting once: OUT-000.png, ...")
+        ->check(CLI::Range(1, 3600));
     o->kernels.addTo(*cmd);
     cmd->add_option("--out", o->out, "Output image (.png)")->required();
     return [o] { return runRender(*o); };

@@ -92,6 +92,11 @@ int runStudio(int argc, char** argv) {
         return 1;
     if (!opened) // no file, or it could not be opened (the message says why): the sample
         window.newSample(options->sample, options->sampleSize);
+    if (!options->mesh.isEmpty() && !window.loadMesh(options->mesh) && screenshot)
+        return 1;
+    if (!options->environment.isEmpty() && !window.setEnvironment(options->environment) &&
+        screenshot)
+        return 1;
     if (screenshot) {
         window.resize(options->windowSize);
         applyViewOptions(window, *options);

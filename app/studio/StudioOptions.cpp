@@ -17,7 +17,9 @@ QString studioUsage() {
         "material's)\n"
         "  --size WxH              the window size of a screenshot (default 1600x1000)\n"
         "  --sample NAME           the built-in sample: bricks, stones or rivets\n"
-        "  --sample-size N         its maps' size in texels (default 512)\n");
+        "  --sample-size N         its maps' size in texels (default 512)\n"
+        "  --mesh FILE             show the material on an OBJ or glTF mesh\n"
+        "  --environment sky|FILE  light it with the built-in sky or an HDR/EXR\n");
 }
 
 Result<StudioOptions> parseStudioOptions(const QStringList& args) {
@@ -82,6 +84,11 @@ Result<StudioOptions> parseStudioOptions(const QStringList& args) {
             o.sampleSize = v->toInt();
             if (o.sampleSize < 4 || o.sampleSize > 8192)
                 return Error{"--sample-size must be 4..8192, not \"" + v->toStdString() + "\""};
+        } else if (a == QLatin1String("--mesh") || a == QLatin1String("--environment")) {
+            Result<QString> v = value(i, a);
+            if (!v)
+                return v.error();
+            (a == QLatin1String("--mesh") ? o.mesh : o.environment) = *v;
         } else if (a.startsWith(QLatin1String("--"))) {
             return Error{"unknown option " + a.toStdString() + " (see --help)"};
         } else if (o.file.isEmpty()) {

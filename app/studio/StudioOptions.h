@@ -2,7 +2,8 @@
 // The command line of parallax-studio:
 //   parallax-studio [FILE.json]
 //   parallax-studio --screenshot FILE.png [--layout 1|2|4] [--techniques a,b,c,d]
-// plus --sample NAME and --sample-size N for the built-in sample opened without a file.
+// plus --sample NAME and --sample-size N for the built-in sample opened without a file, and
+// --mesh FILE and --environment sky|FILE for the preview.
 
 #include "parallax/Result.h"
 #include "parallax/sample/ProceduralMaps.h"
@@ -23,6 +24,8 @@ struct StudioOptions {
     ProceduralMap sample = ProceduralMap::Bricks;
     int sampleSize = 512;
     QSize windowSize{1600, 1000}; // of a screenshot, in logical pixels
+    QString mesh;                 // a mesh file to show the material on
+    QString environment;          // "sky" or an HDR/EXR file to light it with
 };
 
 // Parses the arguments (without the program name). Errors are a sentence for stderr.

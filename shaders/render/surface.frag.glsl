@@ -149,6 +149,9 @@ void main() {
 #else
     vec3 color = pxBlinnPhong(n, v, pxLightDir, albedo, occlusion, lightVisible);
 #endif
+#if defined(PX_HAS_ENVIRONMENT)
+    color = pxToneMap(color); // radiance of any range: exposed and rolled off
+#endif
     pxFragColor = vec4(pxLinearToSrgb(color), 1.0);
 #endif
 #endif

@@ -10,6 +10,8 @@
 #include "GoldenPolicy.h"
 #include "RenderTestSupport.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/light/Environment.h"
+#include "parallax/light/EnvironmentLighting.h"
 #include "parallax/render/Renderer.h"
 
 #include <QTemporaryDir>
@@ -30,6 +32,7 @@ struct Case {
     OrbitCamera camera;
     DirectionalLight light;
     bool albedo = true;
+    bool sky = false; // lit by the built-in environment, shown behind
 };
 
 OrbitCamera closeUp() {
@@ -86,6 +89,28 @@ std::vector<Case> cases() {
         c.camera.distance = 3.8f;
         all.push_back(c);
     }
+    {
+        // The built-in environment on a sphere: image-based light, the sun's soft shadow, the sky
+        // behind.
+        Case c{"relief-shadow-metallic-roughness-sky-sphere",
+               test::sampleMaterial(Technique::Relief),
+               {},
+               {},
+               {},
+               true};
+        c.material.lighting = LightingModel::MetallicRoughness;
+        c.material.roughness = 0.35f;
+        c.material.metallic = 0.3f;
+        c.material.selfShadow = true;
+        c.material.shadowSoftness = 0.3f;
+        c.options.mesh = MeshKind::Sphere;
+        c.options.showEnvironment = true;
+        c.camera.distance = 3.4f;
+        c.light.azimuthDeg = 120.0f;
+        c.light.elevationDeg = 30.0f;
+        c.sky = true;
+        all.push_back(c);
+    }
     return all;
 }
 
@@ -126,7 +151,15 @@ void GoldenTest::matchesGolden_data() {
 
 void GoldenTest::matchesGolden() {
     QFETCH(int, index);
-    const Case c = cases()[static_cast<std::size_t>(index)];
+    Case c = cases()[static_cast<std::size_t>(index)];
+    std::unique_ptr<GpuEnvironment> environment;
+    if (c.sky) {
+        Result<std::unique_ptr<GpuEnvironment>> made = GpuEnvironment::create(
+            prefilterEnvironment(makeSkyEnvironment(c.light.direction(), 512)));
+        QVERIFY(made.ok());
+        environment = std::move(*made);
+        c.options.environment = environment.get();
+    }
     Result<std::unique_ptr<GpuMaterial>> gpu =
         GpuMaterial::create(test::bricksAssets(128, c.albedo), c.material.wrap);
     QVERIFY(gpu.ok());

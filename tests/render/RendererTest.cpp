@@ -5,12 +5,16 @@
 #include "parallax/render/Renderer.h"
 
 #include "RenderTestSupport.h"
+#include "TestMeshes.h"
+#include "parallax/mesh/MeshLoader.h"
 #include "parallax/render/TextureUpload.h"
 #include "parallax/sample/ProceduralMaps.h"
+#include "parallax/trace/ParallaxBound.h"
 #include "parallax/trace/Tracer.h"
 
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <QTemporaryDir>
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
@@ -79,6 +83,8 @@ private slots:
     void initTestCase();
     void renderedHitsAreTheCpuTracersHits_data();
     void renderedHitsAreTheCpuTracersHits();
+    void renderedHitsOnLoadedMeshes_data();
+    void renderedHitsOnLoadedMeshes();
     void normalMapAndHeightNormalsAgree();
     void derivativeFrameMatchesVertexFrame();
     void clampDiscardsRaysLeavingTheTile();
@@ -174,6 +180,129 @@ void RendererTest::renderedHitsAreTheCpuTracersHits() {
         sameFetches >= static_cast<int>(errors.size()) * 9 / 10,
         qPrintable(
             QString("%1 of %2 pixels fetch as the CPU does").arg(sameFetches).arg(errors.size())));
+}
+
+void RendererTest::renderedHitsOnLoadedMeshes_data() {
+    QTest::addColumn<QString>("name");
+    QTest::newRow("torus, generated tangents (obj)") << "torus.obj";
+    QTest::newRow("torus, its own tangents (glb)") << "torus-tangents.glb";
+    QTest::newRow("non-uniformly scaled sphere (gltf)") << "scaled.gltf";
+    QTest::newRow("mirrored sphere (obj)") << "mirrored.obj";
+    // The same torus through a uv set twice as dense: T and B half as long, the relief half as
+    // deep in the world.
+    QTest::newRow("torus, second uv set twice as dense (glb)") << "two-sets.glb";
+}
+
+// As above on a loaded mesh, with the mesh's own rays: each pixel's ray meets the nearest
+// front-facing triangle (found here on the CPU), where uv and the frame T, B, N are interpolated
+// as the rasteriser does; the ray goes into that tangent space (P with Lw = sqrt(|T| |B|), the
+// depth scale of the local uv density) and the CPU Tracer's hit is the renderer's.
+void RendererTest::renderedHitsOnLoadedMeshes() {
+    QFETCH(QString, name);
+    QTemporaryDir dir;
+    const std::string file = dir.filePath(name).toStdString();
+    test::TestMesh source = name.startsWith("torus") || name.startsWith("two-sets")
+                                ? test::torus(32, 16, name.contains("tangents"), 20.0f)
+                            : name.startsWith("scaled")
+                                ? test::scaled(test::seamedSphere(32, 16), {1.6f, 1.0f, 0.6f})
+                                : test::mirroredSphere(32, 16);
+    MeshLoadOptions load;
+    if (name.startsWith("two-sets")) {
+        for (const glm::vec2& uv : source.uvs)
+            source.uvs2.push_back(2.0f * uv);
+        load.uvSet = 1;
+    }
+    QVERIFY(name.endsWith(".obj") ? test::writeObj(file, source) : test::writeGltf(file, source));
+    Result<LoadedMesh> loaded = loadMesh(file, load);
+    QVERIFY(loaded.ok());
+    auto mesh = std::make_shared<const MeshData>(loaded->mesh);
+
+    const HeightField field = makeProceduralMap(ProceduralMap::Noise, 32, 32, 4);
+    MaterialAssets assets;
+    assets.height = field;
+    Result<std::unique_ptr<GpuMaterial>> gpu = GpuMaterial::create(assets, WrapMode::Repeat);
+    QVERIFY(gpu.ok());
+    Material m = test::sampleMaterial(Technique::Exact);
+    m.heightScale = 0.06f;
+    const OrbitCamera cam = camera(25.0f, 30.0f, 3.2f);
+    DrawOptions options;
+    options.customMesh = mesh;
+    options.output = ShaderOutput::Surface;
+    options.kernels = KernelFlavour::Verify;
+    Result<Image> hits = m_renderer->renderImage(**gpu, m, cam, {}, options, kSize);
+    QVERIFY(hits.ok());
+    Result<Tracer> tracer = test::makeTracerFor(field, Technique::Exact, m);
+    QVERIFY(tracer.ok());
+
+    const glm::dmat4 inverse = glm::inverse(glm::dmat4(cam.projection(1.0f) * cam.view()));
+    std::vector<double> errors;
+    for (int y = 0; y < kSize.y; ++y) {
+        for (int x = 0; x < kSize.x; ++x) {
+            if (hits->at(x, y, 2) < 0.0f)
+                continue;
+            const glm::dvec2 ndc((x + 0.5) / kSize.x * 2.0 - 1.0, 1.0 - (y + 0.5) / kSize.y * 2.0);
+            const glm::dvec4 a = inverse * glm::dvec4(ndc, -1.0, 1.0);
+            const glm::dvec4 b = inverse * glm::dvec4(ndc, 1.0, 1.0);
+            const glm::dvec3 from = glm::dvec3(a) / a.w, dir = glm::dvec3(b) / b.w - from;
+            // The nearest front-facing triangle (Moller-Trumbore).
+            double best = 1e30;
+            glm::dvec3 bary(0.0);
+            std::size_t triangle = 0;
+            for (std::size_t i = 0; i < mesh->indices.size(); i += 3) {
+                const glm::dvec3 p0(mesh->vertices[mesh->indices[i]].position);
+                const glm::dvec3 e1 =
+                    glm::dvec3(mesh->vertices[mesh->indices[i + 1]].position) - p0;
+                const glm::dvec3 e2 =
+                    glm::dvec3(mesh->vertices[mesh->indices[i + 2]].position) - p0;
+                if (glm::dot(glm::cross(e1, e2), dir) >= 0.0)
+                    continue; // back-facing: culled
+                const glm::dvec3 q = glm::cross(dir, e2);
+                const double det = glm::dot(e1, q);
+                const glm::dvec3 s0 = from - p0;
+                const double u = glm::dot(s0, q) / det;
+                const glm::dvec3 r = glm::cross(s0, e1);
+                const double v = glm::dot(dir, r) / det, t = glm::dot(e2, r) / det;
+                if (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0 && t < best) {
+                    best = t;
+                    bary = {1.0 - u - v, u, v};
+                    triangle = i;
+                }
+            }
+            if (best == 1e30)
+                continue;
+            auto at = [&](auto member) {
+                glm::dvec3 sum(0.0);
+                for (int k = 0; k < 3; ++k)
+                    sum +=
+                        bary[k] * glm::dvec3(mesh->vertices[mesh->indices[triangle + k]].*member);
+                return sum;
+            };
+            glm::dvec2 uv(0.0);
+            for (int k = 0; k < 3; ++k)
+                uv += bary[k] * glm::dvec2(mesh->vertices[mesh->indices[triangle + k]].uv);
+            const glm::dvec3 T = at(&MeshVertex::tangent), B = at(&MeshVertex::bitangent);
+            const glm::dvec3 N = glm::normalize(at(&MeshVertex::normal));
+            const double Lw = std::sqrt(std::max(glm::length(T) * glm::length(B), 1e-20));
+            const glm::dvec3 d = glm::inverse(glm::dmat3(T, B, N * Lw)) * dir;
+            const glm::vec2 P =
+                boundParallax(glm::vec2(double(m.heightScale) * glm::dvec2(d.x, d.y) /
+                                        std::max(-d.z, 1e-4 * glm::length(d))))
+                    .P;
+            const glm::dvec2 tile = glm::floor(uv);
+            const TraceResult cpu = tracer->trace(uv - tile, P);
+            const double du = (hits->at(x, y, 0) - (cpu.u + tile.x)) * field.width;
+            const double dv = (hits->at(x, y, 1) - (cpu.v + tile.y)) * field.height;
+            errors.push_back(std::sqrt(du * du + dv * dv));
+        }
+    }
+    QVERIFY2(errors.size() > static_cast<std::size_t>(kSize.x * kSize.y / 6),
+             qPrintable(QString("%1 pixels compared").arg(errors.size())));
+    std::sort(errors.begin(), errors.end());
+    const double median = errors[errors.size() / 2], p95 = errors[errors.size() * 95 / 100];
+    qInfo("%s: %zu pixels, hit error median %.2g, p95 %.2g texels", qPrintable(name), errors.size(),
+          median, p95);
+    QVERIFY2(median < 0.01 && p95 < 0.05,
+             qPrintable(QString("hit error: median %1, p95 %2 texels").arg(median).arg(p95)));
 }
 
 // A normal map baked from the heights (docs/conventions.md §3) shades like normals derived in the

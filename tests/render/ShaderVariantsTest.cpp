@@ -49,8 +49,12 @@ std::set<std::string> needed(const VariantKey& k) {
             add({"pxNormalMatrix", "pxCameraPos"});
         return u;
     }
-    add({"pxNormalMatrix", "pxCameraPos", "pxLightDir", "pxLightColor", "pxAmbient",
-         "pxBaseColor"});
+    add({"pxNormalMatrix", "pxCameraPos", "pxLightDir", "pxLightColor", "pxBaseColor"});
+    // An environment replaces the constant ambient and exposes the result.
+    if (k.environment)
+        add({"pxEnvSpecular", "pxSplitSum", "pxIrradianceSh", "pxEnvMaxLevel", "pxExposure"});
+    else
+        add({"pxAmbient"});
     if (k.lighting == LightingModel::BlinnPhong)
         add({"pxSpecular", "pxShininess"});
     else

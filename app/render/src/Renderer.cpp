@@ -14,10 +14,18 @@ Result<std::unique_ptr<Renderer>> Renderer::create() {
     return r;
 }
 
-const GpuMesh& Renderer::mesh(MeshKind kind) {
-    auto it = m_meshes.find(kind);
+const GpuMesh& Renderer::mesh(const DrawOptions& o) {
+    if (o.customMesh) {
+        // Holding the source keeps its address from being reused by another mesh.
+        if (m_customSource != o.customMesh) {
+            m_custom = GpuMesh::upload(*o.customMesh);
+            m_customSource = o.customMesh;
+        }
+        return m_custom;
+    }
+    auto it = m_meshes.find(o.mesh);
     if (it == m_meshes.end())
-        it = m_meshes.emplace(kind, GpuMesh::upload(makeMesh(kind))).first;
+        it = m_meshes.emplace(o.mesh, GpuMesh::upload(makeMesh(o.mesh))).first;
     return it->second;
 }
 
@@ -40,6 +48,7 @@ VariantKey Renderer::variantFor(const GpuMaterial& gpu, const Material& m,
     k.tbn = o.tbn;
     k.output = o.output == ShaderOutput::Surface ? ShaderOutput::Surface : ShaderOutput::Color;
     k.flavour = o.kernels;
+    k.environment = o.environment != nullptr;
     return canonical(k);
 }
 
@@ -77,7 +86,10 @@ Status Renderer::draw(GpuMaterial& gpu, const Material& m, const OrbitCamera& ca
     p.set("pxMetallic", m.metallic);
     p.set("pxShadowSoftness", m.shadowSoftness);
     p.set("pxNormalGreenSign", m.normalGreen == NormalGreen::DirectX ? -1.0f : 1.0f);
+    p.set("pxExposure", o.exposure);
     gpu.bind(p);
+    if (key.environment)
+        o.environment->bind(p);
 
     glViewport(0, 0, size.x, size.y);
     if (o.clear) {
@@ -86,15 +98,48 @@ Status Renderer::draw(GpuMaterial& gpu, const Material& m, const OrbitCamera& ca
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
+    if (o.environment && o.showEnvironment && key.output == ShaderOutput::Color) {
+        if (Status s = drawBackground(*o.environment, camera, o.exposure, aspect); !s)
+            return s;
+    }
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     glDisable(GL_BLEND);
     p.use();
-    mesh(o.mesh).draw();
+    mesh(o).draw();
     glUseProgram(0);
     return checkGlError("drawing " + key.name());
+}
+
+Status Renderer::drawBackground(const GpuEnvironment& environment, const OrbitCamera& camera,
+                                float exposure, float aspect) {
+    if (!m_background) {
+        Result<GeneratedProgram> generated = generateBackgroundProgram();
+        if (!generated)
+            return generated.error();
+        Result<ShaderProgram> built = ShaderProgram::build(*generated);
+        if (!built)
+            return built.error();
+        m_background = std::move(*built);
+        m_emptyVertexArray = gl::Object(gl::ObjectKind::VertexArray);
+    }
+    const ShaderProgram& p = *m_background;
+    p.set("pxInverseViewProjection", glm::inverse(camera.projection(aspect) * camera.view()));
+    p.set("pxCameraPos", camera.position());
+    p.set("pxExposure", exposure);
+    environment.bind(p);
+    // Behind everything: no depth written, the mesh draws over it.
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    p.use();
+    glBindVertexArray(m_emptyVertexArray.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    return checkGlError("drawing the environment");
 }
 
 Result<Image> Renderer::renderImage(GpuMaterial& gpu, const Material& m, const OrbitCamera& camera,

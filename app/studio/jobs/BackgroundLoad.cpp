@@ -11,7 +11,8 @@ namespace {
 constexpr int kQuietMs = 300; // a load this short shows no dialog
 }
 
-bool waitForWork(QWidget* window, const QString& label, QFutureWatcherBase& watcher) {
+bool waitForWork(QWidget* window, const QString& label, QFutureWatcherBase& watcher,
+                 const std::atomic<float>* progress) {
     QEventLoop loop;
     QObject::connect(&watcher, &QFutureWatcherBase::finished, &loop, &QEventLoop::quit);
     if (watcher.isFinished())
@@ -26,13 +27,17 @@ bool waitForWork(QWidget* window, const QString& label, QFutureWatcherBase& watc
     QProgressDialog dialog(window);
     dialog.setWindowModality(Qt::WindowModal);
     dialog.setWindowTitle(QObject::tr("Working"));
-    dialog.setRange(0, 0); // busy: decoders report no progress
+    dialog.setRange(0, progress ? 100 : 0); // busy where the work reports no progress
+    dialog.setAutoReset(false);             // a full bar must not close it: the work may go on
+    dialog.setAutoClose(false);
     dialog.setMinimumDuration(0);
     QElapsedTimer clock;
     clock.start();
     auto showTime = [&] {
         dialog.setLabelText(QObject::tr("%1 %2 s").arg(label).arg(
             (clock.elapsed() + kQuietMs) / 1000.0, 0, 'f', 1));
+        if (progress)
+            dialog.setValue(static_cast<int>(100.0f * progress->load()));
     };
     showTime();
     QTimer tick;

@@ -12,6 +12,7 @@
 #include <QObject>
 #include <QString>
 #include <QtConcurrent/QtConcurrentRun>
+#include <atomic>
 #include <functional>
 
 class QWidget;
@@ -19,15 +20,18 @@ class QWidget;
 namespace px::studio {
 
 // Spins the GUI thread's events until `watcher` finishes or Cancel is pressed (returns true);
-// the dialog says `label` ("Loading bricks.png…") and the seconds so far.
-bool waitForWork(QWidget* window, const QString& label, QFutureWatcherBase& watcher);
+// the dialog says `label` ("Loading bricks.png…") and the seconds so far, and fills its bar from
+// `progress` (0 to 1, written by the work) where there is one.
+bool waitForWork(QWidget* window, const QString& label, QFutureWatcherBase& watcher,
+                 const std::atomic<float>* progress = nullptr);
 
 // Any such work (the editor's Auto measurement too); Cancel gives a cancelled error.
 template <typename T>
-Result<T> runInBackground(QWidget* window, const QString& label, std::function<Result<T>()> work) {
+Result<T> runInBackground(QWidget* window, const QString& label, std::function<Result<T>()> work,
+                          const std::atomic<float>* progress = nullptr) {
     QFutureWatcher<Result<T>> watcher;
     watcher.setFuture(QtConcurrent::run(std::move(work)));
-    if (waitForWork(window, label, watcher))
+    if (waitForWork(window, label, watcher, progress))
         return Error{label.toStdString() + " cancelled", ErrorKind::Cancelled, {}};
     return watcher.result();
 }

@@ -1,6 +1,7 @@
 #include "preview/PreviewRenderer.h"
 
-#include "parallax/render/Renderer.h" // parallax-render
+#include "parallax/render/GpuEnvironment.h" // parallax-render
+#include "parallax/render/Renderer.h"       // parallax-render
 #include "preview/ErrorStats.h"
 
 #include <QOpenGLContext>
@@ -50,6 +51,22 @@ struct PreviewRenderer::Impl {
     WrapMode uploadedWrap = WrapMode::Repeat;
     std::optional<VariantKey> lastKey;         // the variant of the last frame (uniformValue)
     std::optional<RenderTarget> surfaceTarget; // float (u, v, t, fetches), the view's size
+    std::shared_ptr<const PrefilteredEnvironment> uploadedEnvironment; // what gpuEnvironment holds
+    std::unique_ptr<GpuEnvironment> gpuEnvironment;
+
+    Status syncEnvironment(const PreviewScene& scene) {
+        if (uploadedEnvironment == scene.view.environment)
+            return success();
+        gpuEnvironment.reset();
+        uploadedEnvironment = scene.view.environment;
+        if (!uploadedEnvironment)
+            return success();
+        Result<std::unique_ptr<GpuEnvironment>> made = GpuEnvironment::create(*uploadedEnvironment);
+        if (!made)
+            return made.error();
+        gpuEnvironment = std::move(*made);
+        return success();
+    }
 
     // Uploads the scene's maps when they are not the ones on the GPU.
     Status sync(const PreviewScene& scene) {
@@ -97,7 +114,11 @@ struct PreviewRenderer::Impl {
     DrawOptions options(const PreviewScene& scene) const {
         DrawOptions o;
         o.mesh = scene.view.mesh;
+        o.customMesh = scene.view.meshData;
         o.background = kBackground;
+        o.environment = gpuEnvironment.get();
+        o.exposure = scene.view.exposure;
+        o.showEnvironment = scene.view.showEnvironment;
         return o;
     }
 };
@@ -127,6 +148,8 @@ Result<double> PreviewRenderer::draw(const PreviewScene& scene, QSize pixels, un
         return 0.0;
     }
     if (Status s = d.sync(scene); !s)
+        return s.error();
+    if (Status s = d.syncEnvironment(scene); !s)
         return s.error();
     const DrawOptions options = d.options(scene);
     if (Status s = d.renderer->draw(*d.gpu, scene.material, scene.view.camera, scene.view.light,

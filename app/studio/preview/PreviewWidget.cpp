@@ -1,5 +1,6 @@
 #include "preview/PreviewWidget.h"
 
+#include "parallax/render/RenderTarget.h" // parallax-render
 #include "preview/PreviewRenderer.h"
 #include "preview/ViewInteraction.h"
 #include "widgets/Hints.h"
@@ -79,6 +80,21 @@ std::optional<float> PreviewWidget::uniformValue(const QString& name) {
     std::optional<float> value = m_renderer->uniformValue(name.toStdString());
     doneCurrent();
     return value;
+}
+
+Result<Image> PreviewWidget::renderImage(const PreviewScene& scene, QSize pixels) {
+    if (!m_renderer)
+        return Error{"there is no live preview to render with"};
+    makeCurrent();
+    Result<RenderTarget> target =
+        RenderTarget::create({pixels.width(), pixels.height()}, TargetFormat::Rgba8);
+    Result<Image> image = target ? Result<Image>(Image()) : Result<Image>(target.error());
+    if (target) {
+        Result<double> drawn = m_renderer->draw(scene, pixels, target->framebuffer());
+        image = drawn ? Result<Image>(target->read()) : Result<Image>(drawn.error());
+    }
+    doneCurrent();
+    return image;
 }
 
 void PreviewWidget::initializeGL() {

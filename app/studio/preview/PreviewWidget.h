@@ -4,6 +4,8 @@
 // error against the exact intersection) and draws the error heat map and the A/B wipe.
 // Mouse: drag orbits, wheel zooms, Ctrl+drag moves the light, dragging the wipe's divider moves it.
 
+#include "parallax/Result.h"
+#include "parallax/image/Image.h"
 #include "preview/PreviewScene.h"
 
 #include <QOpenGLWidget>
@@ -30,6 +32,10 @@ public:
     // The value a uniform of the program that drew the last frame holds (tests: sliders reach
     // the GPU). Empty when the program has no such uniform.
     std::optional<float> uniformValue(const QString& name);
+
+    // `scene` drawn offscreen at `pixels` on this view's context, without the overlays (heat map,
+    // messages): a picture to save. Fails without a live preview or over the GL's limits.
+    Result<Image> renderImage(const PreviewScene& scene, QSize pixels);
 
     QSize sizeHint() const override { return {320, 240}; }
 

@@ -3,9 +3,13 @@
 // and the overlays. View state, not part of the material: not saved with it and not undone (like
 // a camera in any 3D tool).
 
+#include "parallax/light/EnvironmentLighting.h"
 #include "parallax/render/Camera.h" // parallax-render: OrbitCamera, DirectionalLight
 #include "parallax/render/Mesh.h"   // parallax-render: MeshKind
 #include "parallax/trace/Technique.h"
+
+#include <QString>
+#include <memory>
 
 namespace px::studio {
 
@@ -21,6 +25,17 @@ struct SharedView {
     OrbitCamera camera = defaultCamera();
     DirectionalLight light;
     MeshKind mesh = MeshKind::Plane;
+    // A loaded mesh file drawn instead of `mesh` (MeshLoader.h), and its path; null: `mesh`.
+    std::shared_ptr<const MeshData> meshData;
+    QString meshFile;
+    int meshUvSet = 0;  // the file's uv set read
+    int meshUvSets = 1; // how many it has
+    // Image-based light (docs/lighting.md), prefiltered; null: the light's ambient fill. Its
+    // name is "sky" (the built-in one, its sun where the light was when chosen) or the file.
+    std::shared_ptr<const PrefilteredEnvironment> environment;
+    QString environmentName;
+    float exposure = 0.0f;       // stops, under an environment
+    bool showEnvironment = true; // behind the mesh, under an environment
 };
 
 struct ViewOverlays {

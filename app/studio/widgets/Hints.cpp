@@ -90,7 +90,16 @@ QString lightElevation() {
                        "values make long shadows. Ctrl+drag in a view.");
 }
 QString mesh() {
-    return QObject::tr("The shape the material is shown on.");
+    return QObject::tr("The shape the material is shown on: a built-in one or a recent mesh file.");
+}
+QString environment() {
+    return QObject::tr("Light from a whole sky: the built-in one (its sun where the light is when "
+                       "chosen) or an equirectangular HDR/EXR. The light stays as the sun and "
+                       "casts the relief's shadows.");
+}
+QString loadMesh() {
+    return QObject::tr("Show the material on your own mesh: OBJ or glTF (.obj, .gltf, .glb), also "
+                       "by dropping the file on the window. Remembered for this material.");
 }
 QString linkViews() {
     return QObject::tr("Linked: every viewport shares the camera and the light, so techniques "

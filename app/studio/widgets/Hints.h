@@ -28,6 +28,8 @@ QString lighting();
 QString lightAzimuth();
 QString lightElevation();
 QString mesh();
+QString loadMesh();
+QString environment();
 QString linkViews();
 QString heatMap();
 QString wipe();

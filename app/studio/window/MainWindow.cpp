@@ -54,7 +54,8 @@ QScrollArea* scrolled(QWidget* content) {
 
 MainWindow::MainWindow(const QString& liveReason, QWidget* parent)
     : QMainWindow(parent), m_document(new MaterialDocument(this)), m_baker(new BakeRunner(this)),
-      m_recent(new RecentFiles(this)) {
+      m_recent(new RecentFiles(this)),
+      m_recentMeshes(new RecentFiles(QStringLiteral("recentMeshes"), this)) {
     initStudioResources();
     setObjectName(QStringLiteral("MainWindow"));
     setAcceptDrops(true);
@@ -80,6 +81,18 @@ MainWindow::MainWindow(const QString& liveReason, QWidget* parent)
     connect(m_document, &MaterialDocument::changed, this, &MainWindow::updateTitle);
     connect(m_baker, &BakeRunner::finished, this, &MainWindow::onBakeFinished);
     connect(m_recent, &RecentFiles::changed, this, &MainWindow::updateRecentMenu);
+    connect(m_recentMeshes, &RecentFiles::changed, this,
+            [this] { m_viewPanel->setRecentMeshes(m_recentMeshes->files()); });
+    m_viewPanel->setRecentMeshes(m_recentMeshes->files());
+    connect(m_viewPanel, &ViewPanel::meshFileChosen, this,
+            [this](const QString& path) { loadMesh(path); });
+    connect(m_viewPanel, &ViewPanel::meshUvSetChosen, this,
+            [this](int set) { loadMesh(m_viewports->activeView().meshFile, set); });
+    connect(m_viewPanel, &ViewPanel::loadMeshRequested, this, &MainWindow::loadMeshDialog);
+    connect(m_viewPanel, &ViewPanel::environmentChosen, this, &MainWindow::setEnvironment);
+    connect(m_viewPanel, &ViewPanel::loadEnvironmentRequested, this,
+            &MainWindow::loadEnvironmentDialog);
+    connect(m_viewports, &ViewportGrid::viewEdited, this, &MainWindow::rememberMaterialMesh);
     updateRecentMenu();
     updateTitle();
     resize(1400, 900);

@@ -67,6 +67,25 @@ public:
     // Files without a height map, or a single file, add to the material being edited.
     bool importFolder(const QString& folder, const QString& set = {});
     bool importFiles(const QStringList& paths, const QString& set = {}); // what a drop does
+    // The preview's own mesh (MainWindowMesh.cpp): an OBJ or glTF file loaded in the background
+    // with progress, drawn by the active viewport (every viewport while linked), added to the
+    // recent meshes and remembered for the material in the editor's settings (not in the material
+    // file: the mesh is how this editor previews it, not part of it). A failure shows a message
+    // naming the file and keeps the mesh drawn before.
+    bool loadMesh(const QString& path, int uvSet = 0);
+    RecentFiles* recentMeshes() const { return m_recentMeshes; }
+    // Image-based light in the active viewport (all while linked): "" none, "sky" the built-in one
+    // (its sun where the light is now), else an HDR/EXR file; made in the background. A failure
+    // shows a message naming the file and keeps the environment drawn before.
+    bool setEnvironment(const QString& source);
+    // Pictures out (MainWindowPictures.cpp), rendered offscreen at `size` pixels per view without
+    // the overlays, written atomically as PNG: the active view, or every shown view side by side
+    // as the grid places them; a turntable of the active view, the camera orbiting once in
+    // `frames` steps, FILE-000.png ... written as one set (a failure keeps the previous set).
+    bool saveViewImage(const QString& file, QSize size, bool allViews);
+    bool saveTurntable(const QString& file, QSize size, int frames);
+    // The mesh file remembered for a material file, or empty.
+    static QString rememberedMesh(const QString& materialPath);
     // The last import's summary (hidden when not interactive; tests read and click it).
     ImportSummaryDialog* importSummary() const;
     // Bakes in the background; over a normal map loaded from a file it asks first.
@@ -111,6 +130,12 @@ private:
     void openDialog();
     void importMapDialog(MapKind kind);
     void importFolderDialog();
+    void loadMeshDialog();
+    void loadEnvironmentDialog();
+    enum class PictureKind { ActiveView, AllViews, Turntable };
+    void picturesDialog(PictureKind kind);
+    void rememberMaterialMesh();
+    void restoreMaterialMesh();
     void exportDialog();
     void showShortcuts();
     void runBake(BakeKind kind);
@@ -120,6 +145,7 @@ private:
     MaterialDocument* m_document;
     BakeRunner* m_baker;
     RecentFiles* m_recent;
+    RecentFiles* m_recentMeshes;
     ViewportGrid* m_viewports = nullptr;
     MaterialPanel* m_materialPanel = nullptr;
     TechniquePanel* m_techniquePanel = nullptr;

@@ -8,6 +8,7 @@
 #include "panels/ExportDialog.h"
 #include "panels/ImportSummaryDialog.h"
 #include "panels/MaterialPanel.h"
+#include "parallax/mesh/MeshLoader.h"
 #include "preview/ViewportGrid.h"
 #include "window/MainWindow.h"
 #include "window/RecentFiles.h"
@@ -75,6 +76,7 @@ bool MainWindow::openFile(const QString& path) {
     m_recent->add(path);
     showNotes(loaded->notes);
     bakeMissingConeMaps();
+    restoreMaterialMesh();
     return true;
 }
 
@@ -104,6 +106,7 @@ bool MainWindow::saveTo(const QString& path) {
     }
     m_document->markSaved(*saved, QFileInfo(path).absoluteFilePath());
     m_recent->add(path);
+    rememberMaterialMesh();
     statusBar()->showMessage(tr("Saved %1.").arg(QFileInfo(path).fileName()), 5000);
     return true;
 }
@@ -335,7 +338,16 @@ void MainWindow::dropEvent(QDropEvent* event) {
     if (paths.isEmpty())
         return;
     event->acceptProposedAction();
-    importFiles(paths);
+    // A mesh file is shown, not imported; maps dropped with it are imported as ever.
+    QStringList maps;
+    for (const QString& p : paths) {
+        if (isMeshFile(p.toStdString()))
+            loadMesh(p);
+        else
+            maps << p;
+    }
+    if (!maps.isEmpty())
+        importFiles(maps);
 }
 
 } // namespace px::studio

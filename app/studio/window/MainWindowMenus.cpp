@@ -108,7 +108,25 @@ void MainWindow::createMenus() {
         action(this, tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E),
                tr("Export for the project's renderer, glTF, Godot, Unreal or Unity."));
     connect(exportAction, &QAction::triggered, this, &MainWindow::exportDialog);
-    file->addActions({folder, exportAction});
+    QAction* mesh = action(this, tr("Load &Mesh…"), QKeySequence(Qt::CTRL | Qt::Key_M),
+                           tr("Show the material on an OBJ or glTF mesh (.obj, .gltf, .glb)."));
+    connect(mesh, &QAction::triggered, this, &MainWindow::loadMeshDialog);
+    QAction* viewPicture =
+        action(this, tr("Save &View as PNG…"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_S),
+               tr("Render the active view at any size into a PNG."));
+    connect(viewPicture, &QAction::triggered, this,
+            [this] { picturesDialog(PictureKind::ActiveView); });
+    QAction* allPicture = action(this, tr("Save &All Views as PNG…"), QKeySequence(),
+                                 tr("Render every shown view, side by side, into one PNG."));
+    connect(allPicture, &QAction::triggered, this,
+            [this] { picturesDialog(PictureKind::AllViews); });
+    QAction* turntable = action(this, tr("Save &Turntable…"), QKeySequence(),
+                                tr("Render the active view orbiting once, N numbered PNGs."));
+    connect(turntable, &QAction::triggered, this,
+            [this] { picturesDialog(PictureKind::Turntable); });
+    file->addActions({folder, mesh, exportAction});
+    file->addSeparator();
+    file->addActions({viewPicture, allPicture, turntable});
     file->addSeparator();
     QAction* quit = action(this, tr("&Quit"), QKeySequence::Quit, tr("Close Parallax Studio."));
     connect(quit, &QAction::triggered, this, &QWidget::close);

@@ -9,8 +9,11 @@ namespace {
 const QString kKey = QStringLiteral("recentFiles");
 }
 
-RecentFiles::RecentFiles(QObject* parent) : QObject(parent) {
-    m_files = QSettings().value(kKey).toStringList();
+RecentFiles::RecentFiles(QObject* parent) : RecentFiles(kKey, parent) {}
+
+RecentFiles::RecentFiles(const QString& settingsKey, QObject* parent)
+    : QObject(parent), m_key(settingsKey) {
+    m_files = QSettings().value(m_key).toStringList();
 }
 
 void RecentFiles::add(const QString& path) {
@@ -33,7 +36,7 @@ void RecentFiles::clear() {
 }
 
 void RecentFiles::store() {
-    QSettings().setValue(kKey, m_files);
+    QSettings().setValue(m_key, m_files);
     emit changed();
 }
 

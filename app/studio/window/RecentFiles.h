@@ -1,5 +1,6 @@
 #pragma once
-// The most recently opened or saved materials, newest first, kept in the user's settings.
+// The most recently opened or saved materials (or, under another settings key, the preview's
+// meshes), newest first, kept in the user's settings.
 
 #include <QObject>
 #include <QStringList>
@@ -11,6 +12,7 @@ class RecentFiles : public QObject {
 public:
     static constexpr int kMaxFiles = 10;
     explicit RecentFiles(QObject* parent = nullptr);
+    RecentFiles(const QString& settingsKey, QObject* parent);
 
     QStringList files() const { return m_files; }
     void add(const QString& path);
@@ -22,6 +24,7 @@ signals:
 
 private:
     void store();
+    QString m_key;
     QStringList m_files;
 };
 

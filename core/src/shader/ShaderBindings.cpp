@@ -14,6 +14,8 @@ const std::vector<Binding>& bindings() {
         {"pxNormalMap", "sampler2D", TextureUnit::Normal},
         {"pxOrmMap", "sampler2D", TextureUnit::Orm},
         {"pxRayOrigins", "sampler2D", TextureUnit::RayOrigins},
+        {"pxEnvSpecular", "sampler2D", TextureUnit::EnvSpecular},
+        {"pxSplitSum", "sampler2D", TextureUnit::SplitSum},
         // The trace kernels' parameters (shaders/trace/common.glsl).
         {"pxScale", "float", -1},
         {"pxHeightMax", "float", -1},
@@ -41,6 +43,11 @@ const std::vector<Binding>& bindings() {
         {"pxMetallic", "float", -1},
         {"pxShadowSoftness", "float", -1},
         {"pxNormalGreenSign", "float", -1},
+        // The environment (shaders/render/environment.glsl) and the background.
+        {"pxIrradianceSh", "vec3[9]", -1},
+        {"pxEnvMaxLevel", "float", -1},
+        {"pxExposure", "float", -1},
+        {"pxInverseViewProjection", "mat4", -1},
     };
     static_assert(kMaxMipAtlasLevels == 32, "pxMaxMipRows is declared int[32]");
     return table;

@@ -31,6 +31,7 @@ const std::vector<std::string>& libraryFiles() {
                 f.emplace_back(line.substr(kInclude.size(), line.size() - kInclude.size() - 1));
         }
         f.emplace_back("render/techniques.glsl");
+        f.emplace_back("render/environment.glsl");
         f.emplace_back("render/lighting.glsl");
         return f;
     }();
@@ -65,6 +66,7 @@ std::vector<std::string> definesFor(const VariantKey& k) {
     on(k.tbn == TbnSource::Derivatives, "PX_HAS_DERIVATIVE_TBN");
     on(k.output == ShaderOutput::Surface, "PX_HAS_SURFACE_OUTPUT");
     on(k.output == ShaderOutput::Trace, "PX_HAS_TRACE_OUTPUT");
+    on(k.environment, "PX_HAS_ENVIRONMENT");
     on(k.flavour == KernelFlavour::Production && k.readsHeightMap(), "PX_HAS_HARDWARE_SAMPLING");
     // Derived: what the surface shader computes at all.
     const bool mesh = k.output != ShaderOutput::Trace;
@@ -225,6 +227,27 @@ Result<GeneratedProgram> generateProgram(const VariantKey& requested) {
     Result<GeneratedShader> vertex =
         generateStage(vertexOptions, vertexDefines,
                       {trace ? "render/trace.vert.glsl" : "render/surface.vert.glsl"});
+    if (!vertex)
+        return vertex.error();
+    program.vertex = std::move(*vertex);
+    program.fragment = std::move(*fragment);
+    return program;
+}
+
+Result<GeneratedProgram> generateBackgroundProgram() {
+    GeneratedProgram program;
+    StageOptions fragmentOptions;
+    fragmentOptions.title = "environment background, fragment stage";
+    fragmentOptions.countFetches = false;
+    Result<GeneratedShader> fragment = generateStage(
+        fragmentOptions, {},
+        {"render/environment.glsl", "render/lighting.glsl", "render/background.frag.glsl"});
+    if (!fragment)
+        return fragment.error();
+    StageOptions vertexOptions;
+    vertexOptions.title = "environment background, vertex stage";
+    Result<GeneratedShader> vertex =
+        generateStage(vertexOptions, {}, {"render/background.vert.glsl"});
     if (!vertex)
         return vertex.error();
     program.vertex = std::move(*vertex);

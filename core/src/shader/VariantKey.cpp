@@ -26,6 +26,7 @@ std::uint32_t VariantKey::bits() const {
     b |= (tbn == TbnSource::Derivatives ? 1u : 0u) << 11;
     b |= static_cast<std::uint32_t>(output) << 12;
     b |= (flavour == KernelFlavour::Verify ? 1u : 0u) << 14;
+    b |= (environment ? 1u : 0u) << 15;
     return b;
 }
 
@@ -47,6 +48,7 @@ std::optional<VariantKey> VariantKey::fromBits(std::uint32_t b) {
     k.tbn = (b >> 11) & 1u ? TbnSource::Derivatives : TbnSource::VertexTangents;
     k.output = static_cast<ShaderOutput>(output);
     k.flavour = (b >> 14) & 1u ? KernelFlavour::Verify : KernelFlavour::Production;
+    k.environment = (b >> 15) & 1u;
     return k;
 }
 
@@ -94,6 +96,8 @@ std::string VariantKey::name() const {
         n += "+surface";
     else if (output == ShaderOutput::Trace)
         n += "+trace";
+    if (environment)
+        n += "+environment";
     if (flavour == KernelFlavour::Verify)
         n += "+verify";
     return n;
@@ -107,6 +111,7 @@ VariantKey canonical(VariantKey k) {
         k.albedoMap = false;
         k.surfaceMap = false;
         k.lighting = LightingModel::BlinnPhong;
+        k.environment = false;
         if (k.output == ShaderOutput::Trace)
             k.tbn = TbnSource::VertexTangents; // no mesh
     }
@@ -123,6 +128,8 @@ VariantKey canonical(VariantKey k) {
         k.wrap = WrapMode::Repeat; // the other maps' wrap is sampler state, not shader code
         k.flavour = KernelFlavour::Production; // the flavours differ only in height and cone reads
     }
+    if (k.environment)
+        k.flavour = KernelFlavour::Production;
     return k;
 }
 

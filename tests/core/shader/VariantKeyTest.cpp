@@ -69,12 +69,14 @@ void VariantKeyTest::variantCount() {
     // x 16; 9 parallax techniques x shadow 2 x normal source 4 x 16 x wrap 2, less the 4 (lighting
     // x tbn) of each whose hit nothing reads. Surface: 9 x wrap 2 x tbn 2 + 2 x tbn 2. Trace:
     // 9 x wrap 2 + 2.
-    const std::size_t production =
-        16 + 5 * 16 + 9 * (2 * 4 * 16 * 2 - 4) + (9 * 2 * 2 + 2 * 2) + (9 * 2 + 2);
+    const std::size_t colour = 16 + 5 * 16 + 9 * (2 * 4 * 16 * 2 - 4);
+    const std::size_t production = colour + (9 * 2 * 2 + 2 * 2) + (9 * 2 + 2);
     // Verify kernels for every variant that reads the height map: all but colour none (16),
     // normal from a normal map (16), and none/normal in the surface (2 x tbn 2) and trace outputs.
     const std::size_t verify = production - (16 + 16 + 4 + 2);
-    const std::size_t expected = production + verify;
+    // Under an environment: every colour variant once more, production kernels only.
+    const std::size_t environment = colour;
+    const std::size_t expected = production + verify + environment;
     const std::vector<VariantKey> all = allVariants();
     QCOMPARE(all.size(), expected);
     for (const VariantKey& k : all) {
@@ -84,6 +86,15 @@ void VariantKeyTest::variantCount() {
 }
 
 void VariantKeyTest::canonicalDropsWhatIsNeverRead() {
+    VariantKey lit;
+    lit.environment = true;
+    lit.flavour = KernelFlavour::Verify;
+    QVERIFY(canonical(lit).environment);
+    QVERIFY(canonical(lit).flavour == KernelFlavour::Production); // verify serves hit data only
+    lit.output = ShaderOutput::Surface;
+    QVERIFY(!canonical(lit).environment); // nothing is lit in the hit data
+    QCOMPARE(canonical(lit).flavour, KernelFlavour::Verify);
+
     VariantKey k;
     k.technique = Technique::None;
     k.shadow = true;

@@ -19,13 +19,15 @@ namespace px {
 
 // Texture units, fixed per sampler (layout(binding = N) in the generated code).
 namespace TextureUnit {
-inline constexpr int Height = 0;     // R16 or R32F height map, mipmapped
-inline constexpr int Cone = 1;       // RG32F: height, sqrt(cone ratio)
-inline constexpr int MaxMip = 2;     // R32F max-mip pyramid atlas
-inline constexpr int Albedo = 3;     // linear RGBA (sRGB decoded on upload)
-inline constexpr int Normal = 4;     // tangent-space normal map, +Y up
-inline constexpr int Orm = 5;        // occlusion, roughness, metallic
-inline constexpr int RayOrigins = 6; // RG32F uv0 per ray (trace output)
+inline constexpr int Height = 0;      // R16 or R32F height map, mipmapped
+inline constexpr int Cone = 1;        // RG32F: height, sqrt(cone ratio)
+inline constexpr int MaxMip = 2;      // R32F max-mip pyramid atlas
+inline constexpr int Albedo = 3;      // linear RGBA (sRGB decoded on upload)
+inline constexpr int Normal = 4;      // tangent-space normal map, +Y up
+inline constexpr int Orm = 5;         // occlusion, roughness, metallic
+inline constexpr int RayOrigins = 6;  // RG32F uv0 per ray (trace output)
+inline constexpr int EnvSpecular = 7; // RGB float equirectangular, GGX-prefiltered per mip level
+inline constexpr int SplitSum = 8;    // RG32F split-sum table (N.V, roughness)
 } // namespace TextureUnit
 
 // Levels the max-mip atlas row table holds (a 2^31 texel side would need 32).
@@ -67,6 +69,10 @@ struct GeneratedProgram {
 // Fails for an invalid key (with isValid()'s sentence) or a malformed shader file (naming it and
 // the line). The key is canonicalised first.
 Result<GeneratedProgram> generateProgram(const VariantKey& key);
+
+// The environment drawn behind the mesh (shaders/render/background.*.glsl), from the same files
+// and bindings; its key is the default one (only named in errors).
+Result<GeneratedProgram> generateBackgroundProgram();
 
 // Rewrites the "SOURCE:LINE" / "SOURCE(LINE)" positions of a GLSL compiler log (Mesa, glslang,
 // NVIDIA) into "shaders/FILE:LINE".

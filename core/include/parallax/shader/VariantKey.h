@@ -45,9 +45,13 @@ struct VariantKey {
     TbnSource tbn = TbnSource::VertexTangents;
     ShaderOutput output = ShaderOutput::Color;
     KernelFlavour flavour = KernelFlavour::Production;
+    // Image-based light from an environment (and exposure, tone map) instead of the constant
+    // ambient fill; the directional light stays as the sun.
+    bool environment = false;
 
-    // The key as 15 bits (technique 0-3, shadow 4, normal source 5-6, albedo 7, surface 8,
-    // wrap 9, lighting 10, tbn 11, output 12-13, flavour 14): a cache index and a stable name.
+    // The key as 16 bits (technique 0-3, shadow 4, normal source 5-6, albedo 7, surface 8,
+    // wrap 9, lighting 10, tbn 11, output 12-13, flavour 14, environment 15): a cache index and a
+    // stable name.
     std::uint32_t bits() const;
     static std::optional<VariantKey> fromBits(std::uint32_t bits);
 
@@ -66,7 +70,7 @@ struct VariantKey {
     friend bool operator==(const VariantKey&, const VariantKey&) = default;
 };
 
-inline constexpr int kVariantKeyBits = 15;
+inline constexpr int kVariantKeyBits = 16;
 inline constexpr std::uint32_t kVariantKeyCount = 1u << kVariantKeyBits;
 
 // Clears every bit the key's technique and output never read: shadow only on parallax techniques,
@@ -74,7 +78,8 @@ inline constexpr std::uint32_t kVariantKeyCount = 1u << kVariantKeyBits;
 // is read, roughness/metallic only with the metallic-roughness model (Blinn-Phong reads only the
 // occlusion channel of the surface map). A parallax technique whose hit nothing reads (no map, no
 // shadow, no clamp discard) draws exactly as `none` and becomes `none`. A variant that reads no
-// height map has one flavour, production. Idempotent.
+// height map has one flavour, production. The environment lights the colour output only, in the
+// production flavour (the verify kernels serve the hit data, which no light changes). Idempotent.
 VariantKey canonical(VariantKey key);
 
 // Every valid canonical key, in bits() order: what `parallax-cli shader --dump-all` writes and

@@ -8,14 +8,12 @@
 //            to pole
 //   cylinder radius 0.6, height 1.6, two tiles around, caps one tile each
 
+#include "parallax/mesh/MeshData.h"
 #include "parallax/render/GlObjects.h"
 
-#include <glm/vec2.hpp>
-#include <glm/vec3.hpp>
 #include <optional>
 #include <span>
 #include <string_view>
-#include <vector>
 
 namespace px {
 
@@ -24,19 +22,6 @@ enum class MeshKind { Plane, Cube, Sphere, Cylinder };
 std::span<const std::string_view> meshKindNames();
 std::optional<MeshKind> parseMeshKind(std::string_view name);
 std::string_view meshKindName(MeshKind kind);
-
-struct MeshVertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-    glm::vec2 uv;
-    glm::vec3 tangent;   // dP/du
-    glm::vec3 bitangent; // dP/dv
-};
-
-struct MeshData {
-    std::vector<MeshVertex> vertices;
-    std::vector<unsigned> indices; // triangles, counter-clockwise seen from outside
-};
 
 MeshData makeMesh(MeshKind kind);
 

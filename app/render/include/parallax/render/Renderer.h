@@ -12,6 +12,7 @@
 #include "parallax/material/Material.h"
 #include "parallax/render/Camera.h"
 #include "parallax/render/GlInfo.h"
+#include "parallax/render/GpuEnvironment.h"
 #include "parallax/render/GpuMaterial.h"
 #include "parallax/render/Mesh.h"
 #include "parallax/render/RenderTarget.h"
@@ -20,11 +21,15 @@
 #include <glm/vec4.hpp>
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace px {
 
 struct DrawOptions {
     MeshKind mesh = MeshKind::Plane;
+    // A loaded mesh (parallax/mesh/MeshLoader.h) drawn instead of `mesh` when set; uploaded on
+    // first use and kept while this pointer is the one drawn.
+    std::shared_ptr<const MeshData> customMesh;
     TbnSource tbn = TbnSource::VertexTangents;
     ShaderOutput output = ShaderOutput::Color; // Color or Surface (hit data into a float target)
     // Production: the texture units filter, as an engine's shader would; Verify: the kernels
@@ -36,6 +41,13 @@ struct DrawOptions {
     bool clear = true;
     glm::vec3 baseColor{1.0f}; // multiplies the albedo map (the colour when there is none)
     glm::mat4 model{1.0f};
+    // Image-based light (docs/lighting.md): with an environment the colour output is lit by it
+    // instead of the constant ambient, the light stays as the sun, and the result is exposed by
+    // `exposure` stops and tone-mapped; `showEnvironment` draws it behind the mesh instead of
+    // `background`.
+    const GpuEnvironment* environment = nullptr;
+    float exposure = 0.0f;
+    bool showEnvironment = false;
 };
 
 class Renderer {
@@ -63,11 +75,17 @@ public:
 
 private:
     Renderer() = default;
-    const GpuMesh& mesh(MeshKind kind);
+    const GpuMesh& mesh(const DrawOptions& options);
+    Status drawBackground(const GpuEnvironment& environment, const OrbitCamera& camera,
+                          float exposure, float aspect);
 
     GlInfo m_info;
     ShaderCache m_shaders;
     std::map<MeshKind, GpuMesh> m_meshes;
+    std::shared_ptr<const MeshData> m_customSource; // what m_custom holds
+    GpuMesh m_custom;
+    std::optional<ShaderProgram> m_background;
+    gl::Object m_emptyVertexArray; // core profile draws need one bound
 };
 
 } // namespace px

@@ -1,0 +1,34 @@
+#pragma once
+// Environments for image-based light: equirectangular radiance maps, linear RGB. Direction d maps
+// to u = atan2(d.x, d.z) / 2pi + 1/2 (u = 1/2 looks along +z, the front), v = acos(d.y) / pi (row 0
+// is the zenith, the file's top row); +y is up, as the preview's light and camera angles.
+
+#include "parallax/Result.h"
+#include "parallax/image/Image.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <string>
+
+namespace px {
+
+glm::vec2 equirectUv(glm::vec3 direction);
+glm::vec3 equirectDirection(glm::vec2 uv);
+// Bilinear, u wrapping, v clamped; a grey map gives grey.
+glm::vec3 sampleEquirect(const Image& map, glm::vec3 direction);
+
+// Reads an equirectangular HDR or EXR (any image the project reads) as RGB radiance. Errors name
+// the file: missing, not an image, NaN/Inf or negative texels, not twice as wide as high.
+// Larger than 2048 x 1024 is box-filtered down to that (the prefilter needs no more).
+Result<Image> loadEnvironment(const std::string& path);
+
+// The built-in environment, made here (no image file): a blue sky brightening to a hazy
+// horizon, a sun at `sunDirection` (the preview's directional light, so the sun that shadows is
+// the one in the sky) and a warm grey ground. Radiance in linear units where the horizon is
+// about 1. `width` x width/2 texels.
+Image makeSkyEnvironment(glm::vec3 sunDirection, int width = 512);
+
+// The same map with every texel times `factor` (a brighter or dimmer environment).
+Image scaledEnvironment(Image map, float factor);
+
+} // namespace px

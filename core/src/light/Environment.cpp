@@ -1,0 +1,117 @@
+#include "parallax/light/Environment.h"
+
+#include "parallax/image/ImageFile.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace px {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+constexpr int kMaxWidth = 2048;
+
+// Halves both sides with a 2 x 2 box.
+Image halved(const Image& in) {
+    Image out(in.width / 2, in.height / 2, 3);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x)
+            for (int c = 0; c < 3; ++c)
+                out.at(x, y, c) =
+                    0.25f * (in.at(2 * x, 2 * y, c) + in.at(2 * x + 1, 2 * y, c) +
+                             in.at(2 * x, 2 * y + 1, c) + in.at(2 * x + 1, 2 * y + 1, c));
+    return out;
+}
+
+} // namespace
+
+glm::vec2 equirectUv(glm::vec3 d) {
+    const glm::vec3 n = glm::normalize(d);
+    return {std::atan2(n.x, n.z) / (2.0f * kPi) + 0.5f,
+            std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
+}
+
+glm::vec3 equirectDirection(glm::vec2 uv) {
+    const float phi = (uv.x - 0.5f) * 2.0f * kPi, theta = uv.y * kPi;
+    return {std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi)};
+}
+
+glm::vec3 sampleEquirect(const Image& map, glm::vec3 direction) {
+    const glm::vec2 uv = equirectUv(direction);
+    const float x = uv.x * map.width - 0.5f, y = uv.y * map.height - 0.5f;
+    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+    const float fx = x - x0, fy = y - y0;
+    auto texel = [&](int i, int j) {
+        i = ((i % map.width) + map.width) % map.width;
+        j = std::clamp(j, 0, map.height - 1);
+        if (map.channels < 3)
+            return glm::vec3(map.at(i, j, 0));
+        return glm::vec3(map.at(i, j, 0), map.at(i, j, 1), map.at(i, j, 2));
+    };
+    return (1.0f - fy) * ((1.0f - fx) * texel(x0, y0) + fx * texel(x0 + 1, y0)) +
+           fy * ((1.0f - fx) * texel(x0, y0 + 1) + fx * texel(x0 + 1, y0 + 1));
+}
+
+Result<Image> loadEnvironment(const std::string& path) {
+    Result<Image> read = readImage(path);
+    if (!read)
+        return read.error();
+    const Image& in = *read;
+    if (in.width != 2 * in.height)
+        return fileError(path, "is " + std::to_string(in.width) + " x " +
+                                   std::to_string(in.height) +
+                                   "; an equirectangular environment is twice as wide as high");
+    Image rgb(in.width, in.height, 3);
+    for (int y = 0; y < in.height; ++y) {
+        for (int x = 0; x < in.width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const float v = in.at(x, y, std::min(c, in.channels - 1));
+                if (v < 0.0f)
+                    return fileError(path, "has negative radiance at texel (" + std::to_string(x) +
+                                               ", " + std::to_string(y) + ")");
+                rgb.at(x, y, c) = v;
+            }
+        }
+    }
+    while (rgb.width > kMaxWidth)
+        rgb = halved(rgb);
+    return rgb;
+}
+
+Image makeSkyEnvironment(glm::vec3 sunDirection, int width) {
+    const glm::vec3 sun = glm::normalize(sunDirection);
+    const glm::vec3 zenith(0.18f, 0.36f, 0.85f), horizon(0.95f, 0.98f, 1.05f);
+    const glm::vec3 ground(0.32f, 0.28f, 0.24f), sunColor(1.0f, 0.92f, 0.8f);
+    Image sky(width, width / 2, 3);
+    for (int y = 0; y < sky.height; ++y) {
+        for (int x = 0; x < sky.width; ++x) {
+            const glm::vec3 d =
+                equirectDirection({(x + 0.5f) / sky.width, (y + 0.5f) / sky.height});
+            // Rayleigh-like: the sky pales towards the horizon; the ground is lit grey, darker
+            // straight down; a soft band joins them.
+            const float up = std::max(d.y, 0.0f);
+            glm::vec3 c = glm::mix(horizon, zenith, std::pow(up, 0.45f));
+            const glm::vec3 below = ground * (0.55f + 0.45f * std::exp(8.0f * std::min(d.y, 0.0f)));
+            c = glm::mix(below, c, glm::smoothstep(-0.03f, 0.01f, d.y));
+            // The sun: a small bright disc and a wide glow around it.
+            const float cosine = glm::dot(d, sun);
+            c += sunColor *
+                 (40.0f * std::exp((cosine - 1.0f) * 4000.0f) +
+                  0.6f * std::exp((cosine - 1.0f) * 12.0f)) *
+                 glm::smoothstep(-0.02f, 0.02f, d.y);
+            for (int k = 0; k < 3; ++k)
+                sky.at(x, y, k) = c[k];
+        }
+    }
+    return sky;
+}
+
+Image scaledEnvironment(Image map, float factor) {
+    for (float& v : map.pixels)
+        v *= factor;
+    return map;
+}
+
+} // namespace px

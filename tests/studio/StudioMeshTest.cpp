@@ -1,0 +1,227 @@
+// The editor's own mesh, under Xvfb with llvmpipe: Load Mesh draws the file in the viewport (the
+// error figures still measured), drops load meshes, the recent meshes list them and pick them
+// again, the material's mesh comes back when the material is opened again, and a bad mesh is a
+// message naming the file that keeps the mesh drawn before.
+
+#include "StudioTestSupport.h"
+#include "TestMeshes.h"
+#include "panels/ViewPanel.h"
+#include "parallax/image/ImageFile.h"
+#include "parallax/mesh/MeshLoader.h"
+#include "widgets/SliderField.h"
+#include "window/RecentFiles.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFileInfo>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <limits>
+
+using namespace px;
+using namespace px::studio;
+using namespace px::studio::test;
+
+namespace {
+
+// Pixels whose colour differs by more than a few levels.
+int changedPixels(const QImage& a, const QImage& b) {
+    if (a.size() != b.size())
+        return a.width() * a.height();
+    const QImage x = a.convertToFormat(QImage::Format_RGB32);
+    const QImage y = b.convertToFormat(QImage::Format_RGB32);
+    int changed = 0;
+    for (int j = 0; j < x.height(); ++j) {
+        for (int i = 0; i < x.width(); ++i) {
+            const QRgb p = x.pixel(i, j), q = y.pixel(i, j);
+            changed += std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) +
+                           std::abs(qBlue(p) - qBlue(q)) >
+                       12;
+        }
+    }
+    return changed;
+}
+
+} // namespace
+
+class StudioMeshTest : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+    QString write(const char* name, const px::test::TestMesh& mesh) {
+        const QString file = m_dir.filePath(name);
+        const bool ok = file.endsWith(".obj") ? px::test::writeObj(file.toStdString(), mesh)
+                                              : px::test::writeGltf(file.toStdString(), mesh);
+        return ok ? file : QString();
+    }
+
+public:
+    static void initMain() { setUpOpenGl(); }
+
+private slots:
+    void initTestCase() {
+        isolateSettings(m_dir);
+        QVERIFY2(probeOpenGl().usable, qPrintable(probeOpenGl().reason));
+    }
+
+    void loadedMeshIsDrawnAndMeasured() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        const QImage plane = preview->grabFramebuffer();
+        const QString torus = write("torus.glb", px::test::torus(32, 16, false));
+        QVERIFY(w->loadMesh(torus));
+        QVERIFY(preview->scene().view.meshData);
+        QCOMPARE(preview->scene().view.meshFile, QFileInfo(torus).absoluteFilePath());
+        QVERIFY(waitForFigures(preview));
+        QVERIFY2(preview->renderError().isEmpty(), qPrintable(preview->renderError()));
+        // The error readout goes on on the mesh: the same mesh in the exact pass.
+        QVERIFY(preview->stats().pixels > 0);
+        QVERIFY(preview->stats().p99Error >= 0.0);
+        const QImage drawn = preview->grabFramebuffer();
+        QVERIFY(changedPixels(plane, drawn) > drawn.width() * drawn.height() / 20);
+        QCOMPARE(w->viewPanel()->mesh()->currentText(), QString("torus.glb"));
+        QCOMPARE(w->recentMeshes()->files().value(0), QFileInfo(torus).absoluteFilePath());
+        QVERIFY(w->statusBar()->currentMessage().contains("1024 triangles"));
+
+        // Back to a built-in mesh from the list, then the torus again from the recent meshes.
+        QComboBox* combo = w->viewPanel()->mesh();
+        combo->setCurrentIndex(combo->findText("sphere"));
+        QVERIFY(!preview->scene().view.meshData);
+        QVERIFY(preview->scene().view.mesh == MeshKind::Sphere);
+        combo->setCurrentIndex(combo->findText("torus.glb"));
+        QVERIFY(preview->scene().view.meshData);
+        QVERIFY(waitForFigures(preview));
+    }
+
+    void droppedMeshLoadsAndBadMeshKeepsTheLastOne() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        const QString sphere = write("sphere.obj", px::test::seamedSphere(32, 16));
+        QVERIFY(dropFiles(w.get(), {sphere}));
+        QCOMPARE(preview->scene().view.meshFile, QFileInfo(sphere).absoluteFilePath());
+        QVERIFY(waitForFigures(preview));
+        QVERIFY(w->lastProblem().isEmpty());
+
+        px::test::TestMesh nan = px::test::torus(16, 8, false);
+        nan.positions[2].z = std::numeric_limits<float>::quiet_NaN();
+        const QString bad = write("nan.obj", nan);
+        QVERIFY(dropFiles(w.get(), {bad}));
+        QVERIFY2(w->lastProblem().startsWith(bad + ": vertex"), qPrintable(w->lastProblem()));
+        QVERIFY(w->lastProblem().contains("non-finite position"));
+        QCOMPARE(preview->scene().view.meshFile, QFileInfo(sphere).absoluteFilePath());
+        QCOMPARE(w->viewPanel()->mesh()->currentText(), QString("sphere.obj"));
+        QVERIFY(!w->loadMesh(m_dir.filePath("missing.gltf")));
+        QCOMPARE(w->lastProblem(), m_dir.filePath("missing.gltf") + ": no such file");
+    }
+
+    // A file with two uv sets: the uv spin box offers both and reads the mesh again with the one
+    // chosen (the second repeats the texture twice as often).
+    void uvSetIsChosen() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        px::test::TestMesh torus = px::test::torus(16, 8, false);
+        for (const glm::vec2& uv : torus.uvs)
+            torus.uvs2.push_back(2.0f * uv);
+        const QString file = write("two-sets.glb", torus);
+        QSpinBox* uvSet = w->viewPanel()->uvSet();
+        QVERIFY(!uvSet->isEnabled()); // the built-in plane has one
+        QVERIFY(w->loadMesh(file));
+        QVERIFY(uvSet->isEnabled());
+        QCOMPARE(uvSet->maximum(), 1);
+        const std::shared_ptr<const MeshData> first = w->viewports()->activeView().meshData;
+        uvSet->setValue(1);
+        const SharedView& view = w->viewports()->activeView();
+        QCOMPARE(view.meshUvSet, 1);
+        QVERIFY(view.meshData != first);
+        QCOMPARE(view.meshData->vertices.size(), first->vertices.size());
+        for (std::size_t i = 0; i < first->vertices.size(); ++i)
+            QVERIFY(glm::length(view.meshData->vertices[i].uv - 2.0f * first->vertices[i].uv) <
+                    1e-5f);
+        QVERIFY(w->statusBar()->currentMessage().contains("uv set 1 of 2"));
+    }
+
+    // The mesh belongs to the editor's settings for the material file, not to the file.
+    void materialRemembersItsMesh() {
+        const QString material = m_dir.filePath("bricks.json");
+        const QString torus = write("remembered.gltf", px::test::torus(24, 12, true));
+        {
+            auto w = makeWindow();
+            QVERIFY(w);
+            QVERIFY(w->saveTo(material));
+            QVERIFY(w->loadMesh(torus));
+            QCOMPARE(MainWindow::rememberedMesh(material), QFileInfo(torus).absoluteFilePath());
+        }
+        QFile file(material);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QVERIFY(!file.readAll().contains("remembered.gltf"));
+        auto w = makeWindow();
+        QVERIFY(w);
+        QVERIFY(!w->viewports()->activeView().meshData);
+        QVERIFY(w->openFile(material));
+        QCOMPARE(w->viewports()->activeView().meshFile, QFileInfo(torus).absoluteFilePath());
+        QVERIFY(w->viewports()->activeView().meshData);
+        // A built-in mesh chosen for it is remembered too: no mesh file.
+        QComboBox* combo = w->viewPanel()->mesh();
+        combo->setCurrentIndex(combo->findText("cube"));
+        QVERIFY(MainWindow::rememberedMesh(material).isEmpty());
+    }
+
+    // The sky lights the view (and shows behind it), exposure brightens it, hiding the sky
+    // brings the backdrop back, and a file that is no environment is a message naming it.
+    void environmentLightsTheView() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        const QImage plain = preview->grabFramebuffer();
+        QComboBox* environment = w->viewPanel()->environment();
+        environment->setCurrentIndex(environment->findData(QStringLiteral("sky")));
+        QVERIFY(preview->scene().view.environment);
+        QCOMPARE(preview->scene().view.environmentName, QString("sky"));
+        QVERIFY(waitForFigures(preview));
+        QVERIFY2(preview->renderError().isEmpty(), qPrintable(preview->renderError()));
+        const QImage sky = preview->grabFramebuffer();
+        QVERIFY(changedPixels(plain, sky) > sky.width() * sky.height() / 4);
+        QVERIFY(preview->stats().pixels > 0); // the error readout goes on
+
+        w->viewPanel()->exposure()->setValue(1.5);
+        emit w->viewPanel()->exposure()->valueEdited(1.5);
+        QCOMPARE(preview->scene().view.exposure, 1.5f);
+        QVERIFY(waitForFigures(preview));
+        const QImage brighter = preview->grabFramebuffer();
+        double before = 0.0, after = 0.0;
+        // The panel's re-layout may resize the view by a few pixels: compare what both cover.
+        const int width = std::min(sky.width(), brighter.width());
+        const int height = std::min(sky.height(), brighter.height());
+        for (int y = 0; y < height; y += 4)
+            for (int x = 0; x < width; x += 4) {
+                before += qGray(sky.pixel(x, y));
+                after += qGray(brighter.pixel(x, y));
+            }
+        QVERIFY2(after > before * 1.1, qPrintable(QString("%1 -> %2").arg(before).arg(after)));
+
+        w->viewPanel()->showEnvironment()->setChecked(false);
+        QVERIFY(!preview->scene().view.showEnvironment);
+        QVERIFY(waitForFigures(preview));
+        const QImage hidden = preview->grabFramebuffer();
+        QCOMPARE(hidden.pixel(2, 2), plain.pixel(2, 2)); // the corner: the backdrop again
+
+        const QString square = m_dir.filePath("square.exr");
+        ImageWriteOptions exr;
+        exr.format = PixelFormat::Half;
+        QVERIFY(writeImage(square.toStdString(), Image(16, 16, 3), exr).ok());
+        QVERIFY(!w->setEnvironment(square));
+        QVERIFY2(w->lastProblem().startsWith(square + ": is 16 x 16"),
+                 qPrintable(w->lastProblem()));
+        QCOMPARE(preview->scene().view.environmentName, QString("sky"));
+        environment->setCurrentIndex(0); // none
+        QVERIFY(!preview->scene().view.environment);
+    }
+};
+
+QTEST_MAIN(StudioMeshTest)
+#include "StudioMeshTest.moc"
