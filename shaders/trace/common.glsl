@@ -192,13 +192,26 @@ vec2 pxTwoProduct(float a, float b) {
     return vec2(p, e);
 }
 
+// The part of P W (cells per unit t) that rounding it to a float drops: on a ray across a million
+// cells its 2^-24 is a tenth of a cell, enough to pass beside a spike the ray touches. Set by
+// pxCellsPerT at the start of every trace; pxCellOffset adds it back where the position matters.
+vec2 pxCellsPerTLow = vec2(0.0f, 0.0f);
+
+// The ray's direction in cell space, dXY = (P.x W, P.y H), rounded; its remainder kept above.
+vec2 pxCellsPerT(vec2 P) {
+    vec2 x = pxTwoProduct(P.x, float(pxMapSize.x));
+    vec2 y = pxTwoProduct(P.y, float(pxMapSize.y));
+    pxCellsPerTLow = vec2(x.y, y.y);
+    return vec2(x.x, y.x);
+}
+
 // X0 + dX t - cell, the ray's position at t relative to `cell`, rounded once near the cell rather
 // than at the size of X: the integer parts cancel in integers (cell - floor(X0)) and against the
-// exact product dX t, and only the fractions are added in float.
-float pxCellOffset(int cell, float X0, float dX, float t) {
+// exact product dX t (plus dX's remainder times t), and only the fractions are added in float.
+float pxCellOffset(int cell, float X0, float dX, float dXLow, float t) {
     float i0 = floor(X0);
     vec2 p = pxTwoProduct(dX, t);
-    PX_PRECISE float a = ((p.x - float(cell - int(i0))) + p.y) + (X0 - i0);
+    PX_PRECISE float a = ((p.x - float(cell - int(i0))) + (p.y + dXLow * t)) + (X0 - i0);
     return a;
 }
 
@@ -225,8 +238,8 @@ vec2 pxCellSpan(float a, float dX, int cell, int size) {
 // overlap nor leave a gap and the patch is never read outside its cell.
 #define PX_SPAN_SLACK 4.8e-7f
 float pxSolvePatch(vec4 h, ivec2 cell, vec2 X0, vec2 dXY, float ta, float tb) {
-    float ax = pxCellOffset(cell.x, X0.x, dXY.x, ta);
-    float ay = pxCellOffset(cell.y, X0.y, dXY.y, ta);
+    float ax = pxCellOffset(cell.x, X0.x, dXY.x, pxCellsPerTLow.x, ta);
+    float ay = pxCellOffset(cell.y, X0.y, dXY.y, pxCellsPerTLow.y, ta);
     vec2 sx = pxCellSpan(ax, dXY.x, cell.x, pxMapSize.x);
     vec2 sy = pxCellSpan(ay, dXY.y, cell.y, pxMapSize.y);
     float lo = max(max(sx.x, sy.x), -ta * PX_SPAN_SLACK);
@@ -235,7 +248,11 @@ float pxSolvePatch(vec4 h, ivec2 cell, vec2 X0, vec2 dXY, float ta, float tb) {
         return -1.0f;
     ax += dXY.x * lo;
     ay += dXY.y * lo;
-    float k = h.x - h.y - h.z + h.w;
+    // The twist as the difference of the two rows' slopes: exactly 0 where the rows (or the
+    // columns) are equal, as in the clamp's outermost cells, which the pyramid solves over the rest
+    // of the ray at once; a rounding residue of h00 - h10 - h01 + h11 there, times dY, tilts the
+    // patch by a texel.
+    PX_PRECISE float k = (h.w - h.z) - (h.y - h.x);
     float hx = h.y - h.x;
     float hy = h.z - h.x;
     float C = h.x + hx * ax + hy * ay + k * ax * ay - ((1.0f - ta) - lo);

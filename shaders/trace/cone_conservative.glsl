@@ -50,7 +50,7 @@ float pxConeExit(vec2 apex, float h, float c, vec2 uv, vec2 P, float z) {
 
 float pxTraceCone(vec2 uv0, vec2 P) {
     vec2 X0 = pxCellCoords(uv0);
-    vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
+    vec2 dXY = pxCellsPerT(P);
     float t = pxStartT();
     for (int i = 0; i < pxMaxSteps; ++i) {
         ivec2 cell = pxCellAt(X0, dXY, t);

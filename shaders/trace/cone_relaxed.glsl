@@ -20,7 +20,7 @@ float pxPatchHeight(vec4 h, float fx, float fy) {
 
 float pxTraceRelaxedCone(vec2 uv0, vec2 P) {
     vec2 X0 = pxCellCoords(uv0);
-    vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
+    vec2 dXY = pxCellsPerT(P);
     vec2 texelUv = vec2(1.0f / float(pxMapSize.x), 1.0f / float(pxMapSize.y));
     float t = pxStartT();
     float tAbove = t; // the last t known above the surface
@@ -29,7 +29,8 @@ float pxTraceRelaxedCone(vec2 uv0, vec2 P) {
         float tCell = min(min(pxBorderT(cell.x, X0.x, dXY.x), pxBorderT(cell.y, X0.y, dXY.y)), 1.0f);
         PxConeCorners k = pxConeCorners(cell);
         // The ray's offset in the cell, from the exact product (long rays keep the texel).
-        vec2 a = vec2(pxCellOffset(cell.x, X0.x, dXY.x, t), pxCellOffset(cell.y, X0.y, dXY.y, t));
+        vec2 a = vec2(pxCellOffset(cell.x, X0.x, dXY.x, pxCellsPerTLow.x, t),
+                       pxCellOffset(cell.y, X0.y, dXY.y, pxCellsPerTLow.y, t));
         float z = 1.0f - t;
         if (z <= pxPatchHeight(k.h, clamp(a.x, 0.0f, 1.0f), clamp(a.y, 0.0f, 1.0f))) {
             // The last step ended in the solid, after one crossing.

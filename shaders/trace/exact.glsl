@@ -3,7 +3,7 @@
 
 float pxTraceExact(vec2 uv0, vec2 P) {
     vec2 X0 = pxCellCoords(uv0);
-    vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
+    vec2 dXY = pxCellsPerT(P);
     vec2 r = pxWalkCells(X0, dXY, pxStartT(), 1.0f, pxMaxSteps);
     if (r.x >= 0.0f)
         return r.x;

@@ -55,7 +55,7 @@ float pxCellEntry(ivec2 cell, vec2 X0, vec2 dXY) {
 
 float pxTracePyramid(vec2 uv0, vec2 P) {
     vec2 X0 = pxCellCoords(uv0);
-    vec2 dXY = vec2(P.x * float(pxMapSize.x), P.y * float(pxMapSize.y));
+    vec2 dXY = pxCellsPerT(P);
     float t = pxStartT();
     ivec2 cell = pxCellAt(X0, dXY, t);
     // Start at the level whose nodes are about as wide as the whole ray's footprint: any level is

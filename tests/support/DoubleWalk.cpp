@@ -57,7 +57,7 @@ double doubleWalkT(const HeightField& field, WrapMode wrap, glm::dvec2 uv0, glm:
                      h11 = h(cx + 1, cy + 1);
         const double ax = X0 + dX * t - static_cast<double>(cx);
         const double ay = Y0 + dY * t - static_cast<double>(cy);
-        const double k = h00 - h10 - h01 + h11, hx = h10 - h00, hy = h01 - h00;
+        const double k = (h11 - h01) - (h10 - h00), hx = h10 - h00, hy = h01 - h00;
         const double C = h00 + hx * ax + hy * ay + k * ax * ay - (1.0 - t);
         if (C >= 0.0)
             return t;
