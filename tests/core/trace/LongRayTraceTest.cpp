@@ -1,5 +1,5 @@
 // Float32 `exact`, `pyramid`, `cone` and `relaxed-cone` on the longest rays the tracers accept
-// (height scale 100, polar 89° to 89.99°: |P| at or near its bound of 10^4 uv, up to a million
+// (height scale 100, polar 89° and 89.99°: |P| at or near its bound of 10^4 uv, up to a million
 // cells) against the float64 walk of tests/support/DoubleWalk.h, on noise and the adversarial
 // maps, seeds 1 to 3 and one that changes on every run (printed; PX_TEST_SEED=N repeats it). Every
 // ray within 0.05 texel of the float64 hit (relaxed-cone: 2 texels, its documented bound), or,
@@ -75,7 +75,7 @@ void LongRayTraceTest::exactMatchesADoubleWalk_data() {
     QTest::addColumn<double>("polar");
     for (Technique technique :
          {Technique::Exact, Technique::Pyramid, Technique::Cone, Technique::RelaxedCone})
-        for (double polar : {89.0, 89.9, 89.99})
+        for (double polar : {89.0, 89.99}) // 89.9° is bounded to the same ray as 89.99°
             QTest::addRow("%s %g", info(technique).name.data(), polar) << technique << polar;
 }
 
