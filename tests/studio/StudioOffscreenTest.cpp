@@ -331,10 +331,16 @@ private slots:
         BakeOutcome outcome;
         outcome.request = makeBakeRequest(state, BakeKind::Cone);
         outcome.cone = ConeMap(ConeKind::Conservative, 16, 16);
-        QVERIFY(withBake(state, outcome));
+        const Result<DocumentState> baked = withBake(state, outcome);
+        QVERIFY(baked);
+        // The new state (an undo step) shares the maps with the old one and the bake: no copies.
+        QVERIFY(baked->assets->height.texels.sharesWith(state.assets->height.texels));
+        QVERIFY(baked->assets->albedo.pixels.sharesWith(state.assets->albedo.pixels));
+        QVERIFY(baked->assets->cone.sqrtRatio.sharesWith(outcome.cone.sqrtRatio));
         DocumentState changed = state;
         auto assets = std::make_shared<MaterialAssets>(*state.assets);
-        assets->height.at(3, 3) = 0.123f;
+        assets->height.at(3, 3) = 0.123f; // the copy's own texels now: the state's are unchanged
+        QVERIFY(state.assets->height.at(3, 3) != 0.123f);
         changed.assets = assets;
         QVERIFY(!withBake(changed, outcome));
         changed = state;

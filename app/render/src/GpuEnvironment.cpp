@@ -37,7 +37,7 @@ Result<std::unique_ptr<GpuEnvironment>> GpuEnvironment::create(const Prefiltered
     glBindTexture(GL_TEXTURE_2D, 0);
 
     const Image table = makeSplitSumTable();
-    Result<gl::Object> splitSum = gl::uploadRg32f(table.width, table.height, table.pixels);
+    Result<gl::Object> splitSum = gl::uploadRg32f(table.width, table.height, table.pixels.vector());
     if (!splitSum)
         return splitSum.error();
     g->m_splitSum = std::move(*splitSum);

@@ -55,8 +55,8 @@ Status writeMap(const MaterialAssets& assets, MapKind kind, const std::string& f
 }
 
 // Same pixels: shared memory, or equal texel for texel.
-template <typename T> bool sameData(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.data() == b.data() || a == b;
+bool sameData(const SharedTexels<float>& a, const SharedTexels<float>& b) {
+    return a == b;
 }
 
 bool sameMap(const MaterialAssets& a, const MaterialAssets& b, MapKind kind) {

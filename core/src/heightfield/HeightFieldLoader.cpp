@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace px {
 
@@ -36,7 +37,7 @@ std::string rangeText(float lo, float hi) {
 
 } // namespace
 
-Result<HeightField> heightFieldFromImage(const Image& image, const HeightLoadOptions& options,
+Result<HeightField> heightFieldFromImage(Image image, const HeightLoadOptions& options,
                                          const std::string& source) {
     if (image.empty())
         return fileError(source, "the image has zero size");
@@ -72,10 +73,18 @@ Result<HeightField> heightFieldFromImage(const Image& image, const HeightLoadOpt
         return fileError(source, "the requested channel does not exist (the image has " +
                                      std::to_string(n) + " channel" + (n == 1 ? "" : "s") + ")");
 
-    HeightField field(image.width, image.height);
-    for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x)
-            field.at(x, y) = luma ? luminance(image, x, y) : image.at(x, y, channel);
+    HeightField field;
+    if (n == 1) {
+        // A grey image's texels are the field's: shared, not copied (an 8192² map is 256 MB).
+        field.width = image.width;
+        field.height = image.height;
+        field.texels = std::move(image.pixels);
+    } else {
+        field = HeightField(image.width, image.height);
+        for (int y = 0; y < image.height; ++y) {
+            for (int x = 0; x < image.width; ++x)
+                field.at(x, y) = luma ? luminance(image, x, y) : image.at(x, y, channel);
+        }
     }
 
     const float lo = field.minHeight();
@@ -101,7 +110,7 @@ Result<HeightField> loadHeightField(const std::string& path, const HeightLoadOpt
     Result<Image> image = readImage(path, read);
     if (!image)
         return image.error();
-    return heightFieldFromImage(*image, options, path);
+    return heightFieldFromImage(std::move(*image), options, path);
 }
 
 } // namespace px

@@ -82,8 +82,7 @@ void LongRayTraceTest::exactMatchesADoubleWalk_data() {
 void LongRayTraceTest::exactMatchesADoubleWalk() {
     QFETCH(Technique, technique);
     QFETCH(double, polar);
-    const double bound =
-        technique == Technique::RelaxedCone ? kWrongSurfaceTexels : kExactTexels;
+    const double bound = technique == Technique::RelaxedCone ? kWrongSurfaceTexels : kExactTexels;
     const float scale = 100.0f;
     const float eps = std::ldexp(1.0f, -22);
     double worst = 0.0;

@@ -3,8 +3,9 @@
 // the G channel stores it; the ratio itself is c = g^2, in uv units per unit of normalised height.
 // Heights (the R channel on disk) come from the height field the map was baked from.
 
+#include "parallax/image/SharedTexels.h"
+
 #include <cstddef>
-#include <vector>
 
 namespace px {
 
@@ -14,7 +15,7 @@ struct ConeMap {
     ConeKind kind = ConeKind::Conservative;
     int width = 0;
     int height = 0;
-    std::vector<float> sqrtRatio; // row-major, in [0, 1]
+    SharedTexels<float> sqrtRatio; // row-major, in [0, 1]
 
     ConeMap() = default;
     ConeMap(ConeKind k, int w, int h)

@@ -11,7 +11,7 @@ namespace px {
 struct HeightField {
     int width = 0;
     int height = 0;
-    std::vector<float> texels; // row-major, row 0 = top of the image (v = 0)
+    SharedTexels<float> texels; // row-major, row 0 = top of the image (v = 0)
 
     HeightField() = default;
     HeightField(int w, int h, float value = 0.0f)

@@ -27,8 +27,9 @@ struct HeightLoadOptions {
 // values outside [0,1] in a float file (reported, never clamped silently).
 Result<HeightField> loadHeightField(const std::string& path, const HeightLoadOptions& options = {});
 
-// Extracts one height channel from an image already in memory; `source` names it in errors.
-Result<HeightField> heightFieldFromImage(const Image& image, const HeightLoadOptions& options,
+// Extracts one height channel from an image already in memory; `source` names it in errors. A
+// one-channel image moved in gives its texels to the field (shared, not copied).
+Result<HeightField> heightFieldFromImage(Image image, const HeightLoadOptions& options,
                                          const std::string& source);
 
 } // namespace px

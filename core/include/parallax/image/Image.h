@@ -1,8 +1,9 @@
 #pragma once
 // A W×H image of float channels, row 0 at the top of the file (docs/conventions.md §1: no flips).
 
+#include "parallax/image/SharedTexels.h"
+
 #include <cstddef>
-#include <vector>
 
 namespace px {
 
@@ -10,8 +11,8 @@ struct Image {
     int width = 0;
     int height = 0;
     int channels = 0;
-    std::vector<float> pixels; // row-major, interleaved channels
-    bool alphaOnly = false;    // one channel, which the file names alpha (an EXR's "A")
+    SharedTexels<float> pixels; // row-major, interleaved channels
+    bool alphaOnly = false;     // one channel, which the file names alpha (an EXR's "A")
 
     Image() = default;
     Image(int w, int h, int c)
