@@ -156,8 +156,10 @@ double secantBound(const CellFrame& f, double hb, double s0, double s1, double t
 } // namespace
 
 bool cellFallsAway(const CellGrid& g, const Apex& b, int ox, int oy, Shape shape) {
-    const CellFrame f = cellFrame(g, b, ox, oy, shape);
-    return std::min(std::min(f.radial[0], f.radial[1]), std::min(f.radial[2], f.radial[3])) < 0;
+    const int x = b.x + ox, y = b.y + oy;
+    const Corners k{g.texel(x, y), g.texel(x + shape.wx, y), g.texel(x, y + shape.wy),
+                    g.texel(x + shape.wx, y + shape.wy)};
+    return cornersFallAway(k, ox, oy, shape);
 }
 
 double cellBound(const CellGrid& g, const Apex& apex, int ox, int oy, Shape shape, bool fallingOnly,

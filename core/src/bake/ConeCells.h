@@ -125,6 +125,16 @@ double apexRelaxedBound(const CellGrid& g, const Apex& b, int ox, int oy, Shape 
 // grad h . (q - b) < 0). That derivative is bilinear in the cell, so its corners decide.
 bool cellFallsAway(const CellGrid& g, const Apex& b, int ox, int oy, Shape shape);
 
+// The same from the cell's corners, in the same double arithmetic (the one definition both use).
+inline bool cornersFallAway(const Corners& k, int ox, int oy, Shape shape) {
+    const double sTop = double(k.h10) - k.h00, sBottom = double(k.h11) - k.h01;
+    const double tLeft = double(k.h01) - k.h00, tRight = double(k.h11) - k.h10;
+    const double r00 = sTop * ox + tLeft * oy, r10 = sTop * (ox + shape.wx) + tRight * oy;
+    const double r01 = sBottom * ox + tLeft * (oy + shape.wy);
+    const double r11 = sBottom * (ox + shape.wx) + tRight * (oy + shape.wy);
+    return std::min(std::min(r00, r10), std::min(r01, r11)) < 0;
+}
+
 // Tight lower bound of min |q - b| / (h(q) - h_b) over the cell's points q with h(q) > h_b (and,
 // if `fallingOnly`, falling away from b), by branch and bound on sub-rectangles (the bilinear
 // maximum of a sub-rectangle is at its corners): within a relative `tolerance` below the true
@@ -159,22 +169,28 @@ inline float conservativeCell(const CellGrid& g, const Apex& b, int ox, int oy, 
                                                            kOracleTolerance))));
 }
 
-// The same for a relaxed cone: only points where the surface falls away from b limit it.
-inline float relaxedCell(const CellGrid& g, const Apex& b, int ox, int oy, float c, Shape shape) {
-    if (isApexCell(ox, oy, shape))
-        return std::min(c, floatDown(apexRelaxedBound(g, b, ox, oy, shape)));
-    const int x = b.x + ox, y = b.y + oy;
-    const float m =
-        std::max(std::max(g.texel(x, y), g.texel(x + shape.wx, y)),
-                 std::max(g.texel(x, y + shape.wy), g.texel(x + shape.wx, y + shape.wy)));
+// The same for a relaxed cone: only points where the surface falls away from b limit it. This
+// form is for a cell that is not an apex cell, its corners `k` already read (the fast baker's
+// inner loop); the cheap rejections come first, the branch and bound only where c may drop.
+inline float relaxedCell(const CellGrid& g, const Apex& b, int ox, int oy, float c, Shape shape,
+                         const Corners& k) {
+    const float m = k.max();
     if (!(m > b.h))
         return c;
     const float plain =
         texelDistance(gap(ox, ox + shape.wx), gap(oy, oy + shape.wy), g) / (m - b.h);
-    if (plain >= c || !cellFallsAway(g, b, ox, oy, shape))
+    if (plain >= c || !cornersFallAway(k, ox, oy, shape))
         return c;
     return std::min(
         c, std::max(plain, floatDown(cellBound(g, b, ox, oy, shape, true, c, kRelaxedTolerance))));
+}
+inline float relaxedCell(const CellGrid& g, const Apex& b, int ox, int oy, float c, Shape shape) {
+    if (isApexCell(ox, oy, shape))
+        return std::min(c, floatDown(apexRelaxedBound(g, b, ox, oy, shape)));
+    const int x = b.x + ox, y = b.y + oy;
+    const Corners k{g.texel(x, y), g.texel(x + shape.wx, y), g.texel(x, y + shape.wy),
+                    g.texel(x + shape.wx, y + shape.wy)};
+    return relaxedCell(g, b, ox, oy, c, shape, k);
 }
 inline float relaxedCell(const CellGrid& g, const Apex& b, int ox, int oy, float c) {
     return relaxedCell(g, b, ox, oy, c, g.shape());

@@ -41,6 +41,13 @@ struct Box {
     int x0, x1, y0, y1;
 };
 
+// A cell of a leaf node: where it is in the node, the sectors it can fall in and its corners.
+struct Cell {
+    int i, j;
+    std::uint8_t falls;
+    cone::Corners k;
+};
+
 // Apexes searched together: a kTile x kTile block of texels.
 constexpr int kTile = 4;
 
@@ -115,23 +122,28 @@ public:
                     // Its cells (the node itself for a 1-cell map), for each apex that the node
                     // alone may concern.
                     const int step = n.level == 1 ? 2 : 1;
-                    for (int k = 0; k < count; ++k) {
-                        State& s = apexes[k];
-                        if (count > 1 &&
-                            tileBound(n, Box{s.b.x, s.b.x, s.b.y, s.b.y}, &s, 1) >= 1.0f)
-                            continue;
-                        auto visit = [&](int ox, int oy) { narrow(s, ox, oy); };
-                        const int x0 = n.baseX + n.x * step - s.b.x,
-                                  y0 = n.baseY + n.y * step - s.b.y;
-                        const int x1 = n.baseX + std::min((n.x + 1) * step, g.cellsX) - 1 - s.b.x;
-                        const int y1 = n.baseY + std::min((n.y + 1) * step, g.cellsY) - 1 - s.b.y;
-                        const std::uint8_t sectors =
-                            sectorsOf(x0, x1 + g.spanX(), y0, y1 + g.spanY(), g);
-                        for (int j = 0; j < step && n.y * step + j < p.height(0); ++j) {
-                            for (int i = 0; i < step && n.x * step + i < p.width(0); ++i)
-                                visitCell(n.x * step + i, n.y * step + j, x0 + i, y0 + j, sectors,
-                                          s.b, s.c, visit);
+                    // The cells that can fall at all, read once for every apex.
+                    std::array<Cell, 4> cells;
+                    int cellCount = 0;
+                    for (int j = 0; j < step && n.y * step + j < p.height(0); ++j) {
+                        for (int i = 0; i < step && n.x * step + i < p.width(0); ++i) {
+                            const int x = n.x * step + i, y = n.y * step + j;
+                            if (const std::uint8_t falls = p.falls(x, y))
+                                cells[cellCount++] = {i, j, falls, corners(x, y)};
                         }
+                    }
+                    for (int k = 0; k < count && cellCount > 0; ++k) {
+                        State& s = apexes[k];
+                        const Offsets o = offsets(n, Box{s.b.x, s.b.x, s.b.y, s.b.y});
+                        const std::uint8_t sectors = sectorsOf(o.x0, o.x1, o.y0, o.y1, g);
+                        // A level-0 node is the whole map's one cell: it has no maxima stored.
+                        if (count > 1 && n.level == 1) {
+                            const float m = p.maxFalling(n.level, n.x, n.y, sectors);
+                            if (bound(o, std::max(0.0f, s.c * (m - s.b.h))) >= 1.0f)
+                                continue;
+                        }
+                        for (int c = 0; c < cellCount; ++c)
+                            visitCell(cells[c], o.x0 + cells[c].i, o.y0 + cells[c].j, sectors, s);
                     }
                     continue;
                 }
@@ -140,9 +152,9 @@ public:
                     // looser bound for every cell under it.
                     for (int k = 0; k < count; ++k) {
                         State& s = apexes[k];
-                        const float bound = tileBound(n, Box{s.b.x, s.b.x, s.b.y, s.b.y}, &s, 1);
-                        if (bound < 1.0f) // the node's bound is below c: c = c sqrt(bound)
-                            s.c *= std::sqrt(bound) * (1.0f - 1e-5f);
+                        const float b = tileBound(n, Box{s.b.x, s.b.x, s.b.y, s.b.y}, &s, 1);
+                        if (b < 1.0f) // the node's bound is below c: c = c sqrt(b)
+                            s.c *= std::sqrt(b) * (1.0f - 1e-5f);
                     }
                     continue;
                 }
@@ -193,18 +205,32 @@ private:
     // useless.
     template <typename States>
     float tileBound(const Node& n, const Box& box, const States& apexes, int count) const {
-        const int size = 1 << n.level;
-        const int x0 = n.baseX + n.x * size - box.x1, y0 = n.baseY + n.y * size - box.y1;
-        const int x1 = n.baseX + std::min((n.x + 1) * size, g.cellsX) - 1 + g.spanX() - box.x0;
-        const int y1 = n.baseY + std::min((n.y + 1) * size, g.cellsY) - 1 + g.spanY() - box.y0;
-        const float m = p.maxFalling(n.level, n.x, n.y, sectorsOf(x0, x1, y0, y1, g));
+        const Offsets o = offsets(n, box);
+        const float m = p.maxFalling(n.level, n.x, n.y, sectorsOf(o.x0, o.x1, o.y0, o.y1, g));
         float reach = 0.0f; // max over apexes of c_a (m - h_a)
         for (int k = 0; k < count; ++k)
             reach = std::max(reach, apexes[k].c * (m - apexes[k].b.h));
+        return bound(o, reach);
+    }
+
+    // The offsets (texels) from the apexes of `box` to the cells of node n, far corners included.
+    struct Offsets {
+        int x0, x1, y0, y1;
+    };
+    Offsets offsets(const Node& n, const Box& box) const {
+        const int size = 1 << n.level;
+        return {n.baseX + n.x * size - box.x1,
+                n.baseX + std::min((n.x + 1) * size, g.cellsX) - 1 + g.spanX() - box.x0,
+                n.baseY + n.y * size - box.y1,
+                n.baseY + std::min((n.y + 1) * size, g.cellsY) - 1 + g.spanY() - box.y0};
+    }
+
+    // tileBound() for offsets o and the largest reach c_a (m - h_a) among the apexes.
+    float bound(const Offsets& o, float reach) const {
         if (!(reach > 0.0f))
             return kFar;
-        const float gx = gap(static_cast<float>(x0), static_cast<float>(x1));
-        const float gy = gap(static_cast<float>(y0), static_cast<float>(y1));
+        const float gx = gap(static_cast<float>(o.x0), static_cast<float>(o.x1));
+        const float gy = gap(static_cast<float>(o.y0), static_cast<float>(o.y1));
         if (g.repeat() && (gx >= g.field->width || gy >= g.field->height))
             return kFar;
         const float u = gx * g.invW, v = gy * g.invH;
@@ -223,27 +249,38 @@ private:
 
     static constexpr float kMargin = 1.0f + 1e-5f;
 
-    // Cell (x, y) of the map at offset (ox, oy), seen within `sectors`: the cheap tests first
-    // (not one of the 3x3 already done, can fall in these directions, plain bound below c).
-    template <typename Visit>
-    void visitCell(int x, int y, int ox, int oy, std::uint8_t sectors, const Apex& b, float c,
-                   Visit& visit) const {
+    // A cell of the map at offset (ox, oy) from apex s.b, seen within `sectors`: the cheap tests
+    // first (not one of the 3x3 already done, can fall in these directions, plain bound below c,
+    // falls away from the apex), then relaxedCell() on the corners already read.
+    template <typename State>
+    void visitCell(const Cell& cell, int ox, int oy, std::uint8_t sectors, State& s) const {
         if ((ox >= -1 && ox <= 1 && oy >= -1 && oy <= 1) || beyondPeriod(g, ox, oy))
             return;
-        const std::uint8_t falls = p.falls(x, y) & sectors;
-        if (falls && mayNarrow(x, y, ox, oy, b, c) &&
-            (falls & sectorsOf(ox, ox + g.spanX(), oy, oy + g.spanY(), g)))
-            visit(ox, oy);
+        const std::uint8_t falls = cell.falls & sectors;
+        if (!falls)
+            return;
+        const Corners& k = cell.k;
+        if (!mayNarrow(k, ox, oy, s.b, s.c) || !cornersFallAway(k, ox, oy, g.shape()) ||
+            !(falls & sectorsOf(ox, ox + g.spanX(), oy, oy + g.spanY(), g)))
+            return;
+        const float before = s.c;
+        s.c = relaxedCell(g, s.b, ox, oy, s.c, g.shape(), k);
+        if (s.c < before)
+            *s.witness = {true, s.b.x + ox, s.b.y + oy};
     }
 
-    // Whether cell (x, y) of the map, at offset (ox, oy), can narrow c by its plain bound: the
-    // cheap test before relaxedCell(), with the cell's corners read directly.
-    bool mayNarrow(int x, int y, int ox, int oy, const Apex& b, float c) const {
+    // The corners of cell (x, y) of the map (the right and lower ones wrapped or clamped).
+    Corners corners(int x, int y) const {
         const HeightField& f = *g.field;
         const int x1 = g.repeat() ? (x + 1 == f.width ? 0 : x + 1) : std::min(x + 1, f.width - 1);
         const int y1 = g.repeat() ? (y + 1 == f.height ? 0 : y + 1) : std::min(y + 1, f.height - 1);
-        const float m =
-            std::max(std::max(f.at(x, y), f.at(x1, y)), std::max(f.at(x, y1), f.at(x1, y1)));
+        return {f.at(x, y), f.at(x1, y), f.at(x, y1), f.at(x1, y1)};
+    }
+
+    // Whether a cell at offset (ox, oy) with corners k can narrow c by its plain bound: the cheap
+    // test before relaxedCell().
+    bool mayNarrow(const Corners& k, int ox, int oy, const Apex& b, float c) const {
+        const float m = k.max();
         if (!(m > b.h))
             return false;
         const float u = gap(static_cast<float>(ox), static_cast<float>(ox + g.spanX())) * g.invW;

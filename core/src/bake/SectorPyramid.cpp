@@ -6,46 +6,31 @@
 #include <tbb/parallel_for.h>
 
 namespace px::cone {
-namespace {
 
-// Sector of the direction (x / W, y / H), x, y not both 0: k covers angles [45 k, 45 (k + 1)]
-// degrees from +u towards +v. A direction on a sector's edge may go to either neighbour (sectors
-// are closed). Compares |u| and |v| exactly in integers.
-int sectorOf(int x, int y, const CellGrid& g) {
-    static constexpr std::uint8_t kSector[8] = {0, 1, 3, 2, 7, 6, 4, 5};
-    const long long u = static_cast<long long>(x) * g.field->height; // x / W scaled by W H
-    const long long v = static_cast<long long>(y) * g.field->width;
-    const int steep = (u < 0 ? -u : u) < (v < 0 ? -v : v);
-    return kSector[(v < 0) << 2 | (u < 0) << 1 | steep];
+ArcTable::ArcTable() {
+    for (int m = 1; m < 256; ++m) {
+        int bestGap = -1, bestStart = 0;
+        for (int s = 0; s < 8; ++s) {
+            if (!((m >> s) & 1) || ((m >> ((s + 7) & 7)) & 1))
+                continue; // not the first sector of a run
+            int gap = 0;
+            for (int k = (s + 7) & 7; !((m >> k) & 1) && gap < 8; k = (k + 7) & 7)
+                ++gap;
+            if (gap > bestGap) {
+                bestGap = gap;
+                bestStart = s;
+            }
+        }
+        std::uint8_t arc = 0;
+        for (int i = 0; i < 8 - bestGap; ++i)
+            arc |= std::uint8_t(1u << ((bestStart + i) & 7));
+        fill[m] = bestGap < 0 ? 0xff : arc;
+    }
 }
 
-// For a set of sector bits (the sectors of a shape's corners), the contiguous arc they span:
-// every shape here subtends less than 180 degrees, so the largest gap is outside it.
-struct ArcTable {
-    std::array<std::uint8_t, 256> fill{};
-    ArcTable() {
-        for (int m = 1; m < 256; ++m) {
-            int bestGap = -1, bestStart = 0;
-            for (int s = 0; s < 8; ++s) {
-                if (!((m >> s) & 1) || ((m >> ((s + 7) & 7)) & 1))
-                    continue; // not the first sector of a run
-                int gap = 0;
-                for (int k = (s + 7) & 7; !((m >> k) & 1) && gap < 8; k = (k + 7) & 7)
-                    ++gap;
-                if (gap > bestGap) {
-                    bestGap = gap;
-                    bestStart = s;
-                }
-            }
-            std::uint8_t arc = 0;
-            for (int i = 0; i < 8 - bestGap; ++i)
-                arc |= std::uint8_t(1u << ((bestStart + i) & 7));
-            fill[m] = bestGap < 0 ? 0xff : arc;
-        }
-    }
-};
-
 const ArcTable kArcs;
+
+namespace {
 
 // Whether g . e < 0 for an edge direction e of sector k's boundary at angle 45 j degrees.
 bool fallsAlong(double gx, double gy, int j) {
@@ -70,15 +55,6 @@ bool fallsAlong(double gx, double gy, int j) {
 }
 
 } // namespace
-
-std::uint8_t sectorsOf(int x0, int x1, int y0, int y1, const CellGrid& g) {
-    if (x0 <= 0 && x1 >= 0 && y0 <= 0 && y1 >= 0)
-        return 0xff;
-    const std::uint8_t corners =
-        std::uint8_t((1u << sectorOf(x0, y0, g)) | (1u << sectorOf(x1, y0, g)) |
-                     (1u << sectorOf(x0, y1, g)) | (1u << sectorOf(x1, y1, g)));
-    return kArcs.fill[corners];
-}
 
 SectorPyramid::SectorPyramid(const CellGrid& g, float heightMax, BakeProgress* progress)
     : m_scale(heightMax > 0.0f ? heightMax / 65535.0f : 0.0f) {
@@ -160,16 +136,6 @@ SectorPyramid::SectorPyramid(const CellGrid& g, float heightMax, BakeProgress* p
         m_width.push_back(w);
         m_height.push_back(h);
     }
-}
-
-float SectorPyramid::maxFalling(int level, int x, int y, std::uint8_t sectors) const {
-    const std::uint16_t* q =
-        &m_levels[level][(static_cast<std::size_t>(y) * m_width[level] + x) * 8];
-    unsigned best = 0;
-    for (unsigned m = sectors; m != 0; m &= m - 1)
-        best = std::max<unsigned>(best, q[__builtin_ctz(m)]);
-    // A stored 0 is a cell of height 0 or none: neither rises above any apex.
-    return best == 0 ? -1.0f : static_cast<float>(best) * m_scale;
 }
 
 } // namespace px::cone
