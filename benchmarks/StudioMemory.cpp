@@ -133,10 +133,13 @@ int main(int argc, char** argv) {
     window.viewports()->setLayoutCount(views);
     window.resize(1280, 720);
     window.show();
-    if (!drawEveryView(window, views) || !restartPeak()) {
+    if (!drawEveryView(window, views)) {
         std::fprintf(stderr, "parallax-bench-studio-memory: the window did not draw\n");
         return 1;
     }
+    if (!restartPeak())
+        std::fprintf(stderr, "parallax-bench-studio-memory: /proc/self/clear_refs is not writable: "
+                             "the peaks include the map's generation\n");
     const double before = statusMiB("VmHWM");
 
     StallWatch loadWatch;
