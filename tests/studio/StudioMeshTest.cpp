@@ -23,28 +23,6 @@ using namespace px;
 using namespace px::studio;
 using namespace px::studio::test;
 
-namespace {
-
-// Pixels whose colour differs by more than a few levels.
-int changedPixels(const QImage& a, const QImage& b) {
-    if (a.size() != b.size())
-        return a.width() * a.height();
-    const QImage x = a.convertToFormat(QImage::Format_RGB32);
-    const QImage y = b.convertToFormat(QImage::Format_RGB32);
-    int changed = 0;
-    for (int j = 0; j < x.height(); ++j) {
-        for (int i = 0; i < x.width(); ++i) {
-            const QRgb p = x.pixel(i, j), q = y.pixel(i, j);
-            changed += std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) +
-                           std::abs(qBlue(p) - qBlue(q)) >
-                       12;
-        }
-    }
-    return changed;
-}
-
-} // namespace
-
 class StudioMeshTest : public QObject {
     Q_OBJECT
     QTemporaryDir m_dir;

@@ -12,11 +12,13 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QDropEvent>
+#include <QImage>
 #include <QMimeData>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUrl>
+#include <cstdlib>
 #include <memory>
 
 namespace px::studio::test {
@@ -56,6 +58,26 @@ inline bool waitForFigures(PreviewWidget* preview, int timeoutMs = 30000) {
 inline bool waitForFrame(PreviewWidget* preview, int frames, int timeoutMs = 30000) {
     preview->update();
     return QTest::qWaitFor([&] { return preview->framesRendered() > frames; }, timeoutMs);
+}
+
+// Pixels whose colour differs by more than a few levels.
+inline int changedPixels(const QImage& a, const QImage& b) {
+    if (a.size() != b.size())
+        return a.width() * a.height();
+    const QImage x = a.convertToFormat(QImage::Format_RGB32);
+    const QImage y = b.convertToFormat(QImage::Format_RGB32);
+    int changed = 0;
+    for (int j = 0; j < x.height(); ++j) {
+        const auto* p = reinterpret_cast<const QRgb*>(x.constScanLine(j));
+        const auto* q = reinterpret_cast<const QRgb*>(y.constScanLine(j));
+        for (int i = 0; i < x.width(); ++i) {
+            const int d = std::abs(qRed(p[i]) - qRed(q[i])) +
+                          std::abs(qGreen(p[i]) - qGreen(q[i])) +
+                          std::abs(qBlue(p[i]) - qBlue(q[i]));
+            changed += d > 12;
+        }
+    }
+    return changed;
 }
 
 // Drops local files on `target` as a file manager would: drag enter, then drop.

@@ -34,26 +34,6 @@ using namespace px::studio::test;
 
 namespace {
 
-// Pixels whose colour differs by more than a few levels.
-int changedPixels(const QImage& a, const QImage& b) {
-    if (a.size() != b.size())
-        return a.width() * a.height();
-    const QImage x = a.convertToFormat(QImage::Format_RGB32);
-    const QImage y = b.convertToFormat(QImage::Format_RGB32);
-    int changed = 0;
-    for (int j = 0; j < x.height(); ++j) {
-        const auto* p = reinterpret_cast<const QRgb*>(x.constScanLine(j));
-        const auto* q = reinterpret_cast<const QRgb*>(y.constScanLine(j));
-        for (int i = 0; i < x.width(); ++i) {
-            const int d = std::abs(qRed(p[i]) - qRed(q[i])) +
-                          std::abs(qGreen(p[i]) - qGreen(q[i])) +
-                          std::abs(qBlue(p[i]) - qBlue(q[i]));
-            changed += d > 12;
-        }
-    }
-    return changed;
-}
-
 std::string writeRamp(const QTemporaryDir& dir, const char* name, int size) {
     Image image(size, size, 1);
     for (int y = 0; y < size; ++y)

@@ -36,8 +36,6 @@ public:
     const T* data() const { return m_data ? m_data->data() : nullptr; }
     const T* begin() const { return data(); }
     const T* end() const { return data() + size(); }
-    const T* cbegin() const { return begin(); }
-    const T* cend() const { return end(); }
     const T& operator[](std::size_t i) const { return (*m_data)[i]; }
 
     // Writing: first make the texels this object's own.
