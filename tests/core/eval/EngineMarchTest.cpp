@@ -10,9 +10,11 @@
 #include "parallax/trace/TraceScene.h"
 
 #include <QtTest>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
 
 using namespace px;
 
@@ -162,6 +164,36 @@ void checkFreshP99(const RecommendConfig& config, unsigned seed, Offset offset, 
     }
 }
 
+// An engine model against its shader written out in double on a 64² map: 5 polar angles x 4
+// azimuths x 2 settings x 50 random rays, every hit within `texelTolerance` and the same fetches.
+// `march(u0, v0, polar, azimuth, setting)` returns (shader hit, model hit).
+template <class March>
+void compareWithShader(unsigned seed, const std::array<EngineLayers, 2>& settings,
+                       double texelTolerance, March march) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    int compared = 0;
+    for (double polar : {0.0, 30.0, 60.0, 80.0, 88.0}) {
+        for (double azimuth : {0.0, 35.0, 150.0, 260.0}) {
+            for (const EngineLayers& setting : settings) {
+                for (int k = 0; k < 50; ++k) {
+                    const double u0 = uniform(rng), v0 = uniform(rng);
+                    const auto [want, got] = march(u0, v0, polar, azimuth, setting);
+                    const double texels = std::hypot(got.u - want.u, got.v - want.v) * 64.0;
+                    QVERIFY2(texels < texelTolerance,
+                             qPrintable(QString("polar %1 azimuth %2: %3 texels")
+                                            .arg(polar)
+                                            .arg(azimuth)
+                                            .arg(texels)));
+                    QCOMPARE(got.fetches, want.fetches);
+                    ++compared;
+                }
+            }
+        }
+    }
+    QCOMPARE(compared, 5 * 4 * 2 * 50);
+}
+
 } // namespace
 
 void EngineMarchTest::layerCountIsGodotsMix() {
@@ -178,34 +210,17 @@ void EngineMarchTest::layerCountIsGodotsMix() {
 
 void EngineMarchTest::marchMatchesThePublishedShader() {
     const HeightField field = makeProceduralMap(ProceduralMap::Stones, 64, 64, 3);
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    int compared = 0;
-    for (double polar : {0.0, 30.0, 60.0, 80.0, 88.0}) {
-        for (double azimuth : {0.0, 35.0, 150.0, 260.0}) {
-            for (const EngineLayers& layers : {EngineLayers{8, 32}, EngineLayers{2, 7}}) {
-                const float cosPolar =
-                    static_cast<float>(std::cos(polar * std::numbers::pi / 180.0));
-                const glm::vec2 P = godotParallaxVector(0.05f, polar, azimuth);
-                for (int k = 0; k < 50; ++k) {
-                    const double u0 = uniform(rng), v0 = uniform(rng);
-                    const ShaderHit want = publishedShader(field, u0, v0, polar, azimuth, 5.0,
-                                                           layers.minLayers, layers.maxLayers);
-                    const TraceResult got =
-                        godotDeepParallax(field, WrapMode::Repeat, {u0, v0}, P, cosPolar, layers);
-                    // float against double: the same steps, within float rounding of a texel
-                    const double texels = std::hypot(got.u - want.u, got.v - want.v) * 64.0;
-                    QVERIFY2(texels < 1e-3, qPrintable(QString("polar %1 azimuth %2: %3 texels")
-                                                           .arg(polar)
-                                                           .arg(azimuth)
-                                                           .arg(texels)));
-                    QCOMPARE(got.fetches, want.fetches);
-                    ++compared;
-                }
-            }
-        }
-    }
-    QCOMPARE(compared, 5 * 4 * 2 * 50);
+    // float against double: the same steps, within float rounding of a texel
+    compareWithShader(
+        7, {EngineLayers{8, 32}, EngineLayers{2, 7}}, 1e-3,
+        [&](double u0, double v0, double polar, double azimuth, const EngineLayers& layers) {
+            const float cosPolar = static_cast<float>(std::cos(polar * std::numbers::pi / 180.0));
+            const glm::vec2 P = godotParallaxVector(0.05f, polar, azimuth);
+            return std::pair(
+                publishedShader(field, u0, v0, polar, azimuth, 5.0, layers.minLayers,
+                                layers.maxLayers),
+                godotDeepParallax(field, WrapMode::Repeat, {u0, v0}, P, cosPolar, layers));
+        });
 }
 
 void EngineMarchTest::flatMapIsFoundExactly() {
@@ -280,31 +295,14 @@ void EngineMarchTest::hdrpStepCountIsItsAngleMix() {
 
 void EngineMarchTest::hdrpMatchesThePublishedShader() {
     const HeightField field = makeProceduralMap(ProceduralMap::Stones, 64, 64, 3);
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    int compared = 0;
-    for (double polar : {0.0, 30.0, 60.0, 80.0, 88.0}) {
-        for (double azimuth : {0.0, 35.0, 150.0, 260.0}) {
-            for (const EngineLayers& steps : {EngineLayers{5, 15}, EngineLayers{2, 40}}) {
-                const glm::vec2 P = parallaxVector(0.05f, polar, azimuth);
-                for (int k = 0; k < 50; ++k) {
-                    const double u0 = uniform(rng), v0 = uniform(rng);
-                    const ShaderHit want = publishedHdrp(field, u0, v0, polar, azimuth, 0.05,
-                                                         steps.minLayers, steps.maxLayers);
-                    const TraceResult got =
-                        hdrpParallaxOcclusion(field, WrapMode::Repeat, {u0, v0}, P, steps);
-                    const double texels = std::hypot(got.u - want.u, got.v - want.v) * 64.0;
-                    QVERIFY2(texels < 2e-3, qPrintable(QString("polar %1 azimuth %2: %3 texels")
-                                                           .arg(polar)
-                                                           .arg(azimuth)
-                                                           .arg(texels)));
-                    QCOMPARE(got.fetches, want.fetches);
-                    ++compared;
-                }
-            }
-        }
-    }
-    QCOMPARE(compared, 5 * 4 * 2 * 50);
+    compareWithShader(
+        11, {EngineLayers{5, 15}, EngineLayers{2, 40}}, 2e-3,
+        [&](double u0, double v0, double polar, double azimuth, const EngineLayers& steps) {
+            const glm::vec2 P = parallaxVector(0.05f, polar, azimuth);
+            return std::pair(publishedHdrp(field, u0, v0, polar, azimuth, 0.05, steps.minLayers,
+                                           steps.maxLayers),
+                             hdrpParallaxOcclusion(field, WrapMode::Repeat, {u0, v0}, P, steps));
+        });
 }
 
 void EngineMarchTest::hdrpAdviceMeetsTheBudgetOnFreshRays() {
