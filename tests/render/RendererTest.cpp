@@ -6,6 +6,7 @@
 
 #include "RenderTestSupport.h"
 #include "TestMeshes.h"
+#include "parallax/bake/ConeMapBaker.h"
 #include "parallax/mesh/MeshLoader.h"
 #include "parallax/render/TextureUpload.h"
 #include "parallax/sample/ProceduralMaps.h"
@@ -90,6 +91,8 @@ private slots:
     void clampDiscardsRaysLeavingTheTile();
     void bakesOnlyWhatTheTechniqueReads();
     void heightsUploadAsR16OrR32F();
+    void bigMapsUploadInBandsExactly();
+    void aNewMaterialKeepsTheTexturesOfUnchangedMaps();
     void uniformChangesDoNotRecompile();
     void grazingViewsStayFinite();
     void shadowsDarkenOnlyWhereTheLightIsLow();
@@ -477,6 +480,136 @@ void RendererTest::heightsUploadAsR16OrR32F() {
                                     .arg(back[i])
                                     .arg(f->texels[i])));
     }
+}
+
+namespace {
+
+// Level 0 of `texture`, `channels` floats a texel.
+std::vector<float> readBack(const gl::Object& texture, int width, int height, int channels) {
+    std::vector<float> back(static_cast<std::size_t>(width) * height * channels);
+    glBindTexture(GL_TEXTURE_2D, texture.id());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0,
+                  channels == 1   ? GL_RED
+                  : channels == 2 ? GL_RG
+                                  : GL_RGBA,
+                  GL_FLOAT, back.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return back;
+}
+
+} // namespace
+
+// Maps go up a few MiB of rows at a time (no conversion buffer the size of the map): every band,
+// the last short one too, lands on its own rows.
+void RendererTest::bigMapsUploadInBandsExactly() {
+    // 2100 x 1030: two bands as R16, three as R32F, five as RG32F, nine for the albedo's RGBA.
+    const int w = 2100, h = 1030;
+    HeightField field(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            field.at(x, y) = static_cast<float>((x * 7919 + y * 104729) % 65536) / 65535.0f;
+    HeightField floats = field;
+    floats.at(w - 1, h - 1) = 0.1234567f;
+    ConeMap cones(ConeKind::Conservative, w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            cones.g(x, y) = static_cast<float>((x + 3 * y) % 1000) / 999.0f;
+    Image albedo(w, h, 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c)
+                albedo.at(x, y, c) = static_cast<float>((x + y + 100 * c) % 256) / 255.0f;
+    auto mismatch = [](const std::vector<float>& back, int channels, int channel, auto expected,
+                       float tolerance) -> QString {
+        for (std::size_t i = 0; i < back.size() / channels; ++i) {
+            const float want = expected(i);
+            if (!(std::abs(back[i * channels + channel] - want) <= tolerance))
+                return QString("texel %1 (row %2): %3 on the GPU, %4 expected")
+                    .arg(i)
+                    .arg(i / 2100)
+                    .arg(back[i * channels + channel])
+                    .arg(want);
+        }
+        return {};
+    };
+    Result<gl::Object> r16 = gl::uploadHeight(field, gl::HeightFormat::R16);
+    Result<gl::Object> r32 = gl::uploadHeight(floats, gl::HeightFormat::R32F);
+    Result<gl::Object> cone = gl::uploadConeMap(field, cones);
+    Result<gl::Object> colour = gl::uploadAlbedo(albedo);
+    QVERIFY(r16.ok() && r32.ok() && cone.ok() && colour.ok());
+    QString bad = mismatch(
+        readBack(*r16, w, h, 1), 1, 0, [&](std::size_t i) { return field.texels[i]; },
+        0.5f / 65535.0f);
+    QVERIFY2(bad.isEmpty(), qPrintable("R16 height: " + bad));
+    bad = mismatch(
+        readBack(*r32, w, h, 1), 1, 0, [&](std::size_t i) { return floats.texels[i]; }, 0.0f);
+    QVERIFY2(bad.isEmpty(), qPrintable("R32F height: " + bad));
+    const std::vector<float> rg = readBack(*cone, w, h, 2);
+    bad = mismatch(
+        rg, 2, 0, [&](std::size_t i) { return field.texels[i]; }, 0.0f);
+    QVERIFY2(bad.isEmpty(), qPrintable("cone map R: " + bad));
+    bad = mismatch(
+        rg, 2, 1, [&](std::size_t i) { return cones.sqrtRatio[i]; }, 0.0f);
+    QVERIFY2(bad.isEmpty(), qPrintable("cone map G: " + bad));
+    // The albedo is linear on the GPU (half floats: 1e-3 relative).
+    const std::vector<float> rgba = readBack(*colour, w, h, 4);
+    for (int c = 0; c < 3; ++c) {
+        bad = mismatch(
+            rgba, 4, c,
+            [&](std::size_t i) {
+                const float v = albedo.pixels[i * 3 + c];
+                return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+            },
+            1e-3f);
+        QVERIFY2(bad.isEmpty(), qPrintable(QString("albedo channel %1: ").arg(c) + bad));
+    }
+}
+
+// After a bake or an undo the material's maps are mostly the same texels: a material made with
+// the one before takes their textures over (no upload), and uploads only what changed.
+void RendererTest::aNewMaterialKeepsTheTexturesOfUnchangedMaps() {
+    const MaterialAssets before = test::bricksAssets(64);
+    Result<std::unique_ptr<GpuMaterial>> first = GpuMaterial::create(before, WrapMode::Repeat);
+    QVERIFY(first.ok());
+    QCOMPARE((*first)->uploadCount(), 2); // height and albedo
+    QVERIFY((*first)->prepare(Technique::Pyramid).ok());
+    QCOMPARE((*first)->uploadCount(), 3);
+
+    // A bake: the same height and albedo (shared texels) and a new cone map.
+    MaterialAssets baked = before;
+    baked.cone = bakeConeMap(before.height, WrapMode::Repeat, ConeKind::Conservative);
+    Result<std::unique_ptr<GpuMaterial>> second =
+        GpuMaterial::create(baked, WrapMode::Repeat, first->get());
+    QVERIFY(second.ok());
+    QCOMPARE((*second)->uploadCount(), 0);
+    QVERIFY((*second)->ready(Technique::Pyramid)); // the pyramid came along
+    QVERIFY((*second)->prepare(Technique::Cone).ok());
+    QCOMPARE((*second)->uploadCount(), 1); // the cone map alone
+    QCOMPARE((*second)->bakeCount(), 0);
+    // It draws what a material made from scratch draws.
+    Result<std::unique_ptr<GpuMaterial>> fresh = GpuMaterial::create(baked, WrapMode::Repeat);
+    QVERIFY(fresh.ok());
+    for (Technique t : {Technique::Cone, Technique::Pyramid, Technique::Pom}) {
+        Result<Image> kept =
+            m_renderer->renderImage(**second, test::sampleMaterial(t), camera(), {}, {}, {48, 48});
+        Result<Image> made =
+            m_renderer->renderImage(**fresh, test::sampleMaterial(t), camera(), {}, {}, {48, 48});
+        QVERIFY(kept.ok() && made.ok());
+        QVERIFY2(kept->pixels == made->pixels, std::string(info(t).name).c_str());
+    }
+    // Undo: the first maps again, every texture still there.
+    Result<std::unique_ptr<GpuMaterial>> undone =
+        GpuMaterial::create(before, WrapMode::Repeat, second->get());
+    QVERIFY(undone.ok());
+    QCOMPARE((*undone)->uploadCount(), 0);
+    // An equal copy is not the same texels: it uploads (equality would cost a compare of the
+    // whole map per frame); so does another wrap (the textures' sampling differs).
+    MaterialAssets copied = before;
+    copied.height.at(0, 0) = before.height.at(0, 0); // a write detaches the copy
+    QVERIFY(!copied.height.texels.sharesWith(before.height.texels));
+    QCOMPARE((*GpuMaterial::create(copied, WrapMode::Repeat, undone->get()))->uploadCount(), 1);
+    QCOMPARE((*GpuMaterial::create(before, WrapMode::Clamp, undone->get()))->uploadCount(), 2);
 }
 
 void RendererTest::uniformChangesDoNotRecompile() {

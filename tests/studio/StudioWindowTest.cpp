@@ -13,6 +13,7 @@
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
+#include "parallax/render/GpuMaterial.h"
 #include "widgets/SliderField.h"
 #include "widgets/TechniqueCombo.h"
 
@@ -121,6 +122,42 @@ private slots:
         QVERIFY(maxLayers > 32);
         QVERIFY(waitForFrame(preview, preview->framesRendered()));
         QCOMPARE(preview->uniformValue("pxMaxLayers").value_or(-1), float(maxLayers));
+    }
+
+    // Two views of one material draw from one copy of its maps on the GPU (an 8192² height map is
+    // 171 MB there, and llvmpipe keeps it in the process); a bake uploads its own map and nothing
+    // else, and undoing it uploads nothing.
+    void viewsShareTheMapsOnTheGpu() {
+        auto w = makeWindow(2);
+        QVERIFY(w);
+        PreviewWidget* left = w->viewports()->viewport(0)->preview();
+        PreviewWidget* right = w->viewports()->viewport(1)->preview();
+        QVERIFY(left && right);
+        QVERIFY(waitForFrame(left, 0) && waitForFrame(right, 0));
+        const GpuMaterial* first = left->gpuMaterial();
+        QVERIFY(first && first == right->gpuMaterial());
+        QCOMPARE(first->uploadCount(), 2); // the sample's height and albedo, once
+
+        w->startBake(BakeKind::Cone);
+        QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 60000);
+        QVERIFY(w->document()->state().hasMap(MapKind::Cone));
+        w->document()->edit("cone", [](DocumentState& s) {
+            s.setView(1, {Technique::Cone, info(Technique::Cone).defaults});
+        });
+        QVERIFY(waitForFrame(left, left->framesRendered()) &&
+                waitForFrame(right, right->framesRendered()));
+        QVERIFY2(right->renderError().isEmpty(), qPrintable(right->renderError()));
+        const GpuMaterial* baked = left->gpuMaterial();
+        QVERIFY(baked && baked == right->gpuMaterial());
+        QVERIFY(baked->ready(Technique::Cone));
+        QCOMPARE(baked->uploadCount(), 1); // the cone map; the height and albedo came along
+        QCOMPARE(baked->bakeCount(), 0);
+
+        w->document()->undoStack()->undo(); // the bake
+        QVERIFY(!w->document()->state().hasMap(MapKind::Cone));
+        QVERIFY(waitForFrame(left, left->framesRendered()));
+        QVERIFY(left->gpuMaterial());
+        QCOMPARE(left->gpuMaterial()->uploadCount(), 0);
     }
 
     void viewportsTraceDifferentTechniques() {

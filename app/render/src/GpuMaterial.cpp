@@ -9,46 +9,120 @@
 
 namespace px {
 
-Result<std::unique_ptr<GpuMaterial>> GpuMaterial::create(const MaterialAssets& assets,
-                                                         WrapMode wrap) {
+namespace {
+
+// The same map, not an equal one: the same size and the very same texels in memory.
+bool same(const Image& a, const Image& b) {
+    if (a.empty() || b.empty())
+        return a.empty() && b.empty();
+    return a.width == b.width && a.height == b.height && a.channels == b.channels &&
+           a.pixels.sharesWith(b.pixels);
+}
+
+bool same(const HeightField& a, const HeightField& b) {
+    return !a.empty() && a.width == b.width && a.height == b.height &&
+           a.texels.sharesWith(b.texels);
+}
+
+bool same(const ConeMap& a, const std::optional<ConeMap>& b) {
+    return b && !a.sqrtRatio.empty() && a.kind == b->kind && a.width == b->width &&
+           a.height == b->height && a.sqrtRatio.sharesWith(b->sqrtRatio);
+}
+
+} // namespace
+
+Result<std::unique_ptr<GpuMaterial>>
+GpuMaterial::create(const MaterialAssets& assets, WrapMode wrap, const GpuMaterial* previous) {
     std::unique_ptr<GpuMaterial> m(new GpuMaterial);
     m->m_wrap = wrap;
-    if (!assets.height.empty()) {
-        m->m_field = assets.height;
-        m->m_heightMax = assets.height.maxHeight();
-        m->m_height16 = gl::fitsR16(assets.height);
-        Result<gl::Object> t = gl::uploadHeight(
-            assets.height, m->m_height16 ? gl::HeightFormat::R16 : gl::HeightFormat::R32F);
-        if (!t)
-            return t.error();
-        m->m_height = std::move(*t);
-    }
-    if (!assets.albedo.empty()) {
-        Result<gl::Object> t = gl::uploadAlbedo(assets.albedo);
-        if (!t)
-            return t.error();
-        m->m_albedo = std::move(*t);
-    }
-    if (!assets.normal.empty()) {
-        Result<gl::Object> t = gl::uploadNormalMap(assets.normal);
-        if (!t)
-            return t.error();
-        m->m_normal = std::move(*t);
-    }
-    if (!assets.ao.empty() || !assets.roughness.empty() || !assets.metallic.empty()) {
-        auto present = [](const Image& i) { return i.empty() ? nullptr : &i; };
-        Result<gl::Object> t =
-            gl::uploadOrm(present(assets.ao), present(assets.roughness), present(assets.metallic));
-        if (!t)
-            return t.error();
-        m->m_orm = std::move(*t);
-    }
-    if (!assets.cone.sqrtRatio.empty())
-        m->m_coneCpu = assets.cone;
-    if (!assets.relaxedCone.sqrtRatio.empty())
-        m->m_relaxedCpu = assets.relaxedCone;
+    if (previous && previous->m_wrap != wrap)
+        previous = nullptr; // its textures sample with another wrap
+    if (Status s = m->uploadMaps(assets, previous); !s)
+        return s.error();
     m->setWrap(wrap); // sampler state (the wrap is already m_wrap: nothing is invalidated)
     return m;
+}
+
+Status GpuMaterial::uploadMaps(const MaterialAssets& assets, const GpuMaterial* previous) {
+    // Takes `previous`'s texture when `reused`, else uploads with `upload`.
+    auto take = [this](Texture& to, bool reused, const Texture& from,
+                       const auto& upload) -> Status {
+        if (reused && from) {
+            to = from;
+            return success();
+        }
+        Result<gl::Object> t = upload();
+        if (!t)
+            return t.error();
+        to = std::make_shared<const gl::Object>(std::move(*t));
+        ++m_uploads;
+        return success();
+    };
+    const bool sameHeight = previous && same(assets.height, previous->m_field);
+    if (!assets.height.empty()) {
+        m_field = assets.height;
+        m_heightMax = sameHeight ? previous->m_heightMax : assets.height.maxHeight();
+        m_height16 = sameHeight ? previous->m_height16 : gl::fitsR16(assets.height);
+        if (Status s = take(m_height, sameHeight, sameHeight ? previous->m_height : nullptr,
+                            [&] {
+                                return gl::uploadHeight(assets.height,
+                                                        m_height16 ? gl::HeightFormat::R16
+                                                                   : gl::HeightFormat::R32F);
+                            });
+            !s)
+            return s;
+    }
+    if (!assets.albedo.empty()) {
+        m_albedoMap = assets.albedo;
+        const bool reused = previous && same(assets.albedo, previous->m_albedoMap);
+        if (Status s = take(m_albedo, reused, reused ? previous->m_albedo : nullptr,
+                            [&] { return gl::uploadAlbedo(assets.albedo); });
+            !s)
+            return s;
+    }
+    if (!assets.normal.empty()) {
+        m_normalMap = assets.normal;
+        const bool reused = previous && same(assets.normal, previous->m_normalMap);
+        if (Status s = take(m_normal, reused, reused ? previous->m_normal : nullptr,
+                            [&] { return gl::uploadNormalMap(assets.normal); });
+            !s)
+            return s;
+    }
+    if (!assets.ao.empty() || !assets.roughness.empty() || !assets.metallic.empty()) {
+        m_aoMap = assets.ao;
+        m_roughnessMap = assets.roughness;
+        m_metallicMap = assets.metallic;
+        const bool reused = previous && same(assets.ao, previous->m_aoMap) &&
+                            same(assets.roughness, previous->m_roughnessMap) &&
+                            same(assets.metallic, previous->m_metallicMap);
+        auto present = [](const Image& i) { return i.empty() ? nullptr : &i; };
+        if (Status s = take(m_orm, reused, reused ? previous->m_orm : nullptr,
+                            [&] {
+                                return gl::uploadOrm(present(assets.ao), present(assets.roughness),
+                                                     present(assets.metallic));
+                            });
+            !s)
+            return s;
+    }
+    // Derived maps upload when a technique asks (prepare); ones `previous` holds for the same
+    // height come along, so a bake adds one texture and an undo none.
+    if (!assets.cone.sqrtRatio.empty()) {
+        m_coneCpu = assets.cone;
+        if (sameHeight && same(assets.cone, previous->m_coneCpu))
+            m_cone = previous->m_cone;
+    }
+    if (!assets.relaxedCone.sqrtRatio.empty()) {
+        m_relaxedCpu = assets.relaxedCone;
+        if (sameHeight && same(assets.relaxedCone, previous->m_relaxedCpu))
+            m_relaxed = previous->m_relaxed;
+    }
+    if (sameHeight && previous->m_pyramidCpu) {
+        m_pyramidCpu = previous->m_pyramidCpu;
+        m_atlas = previous->m_atlas;
+        m_atlasRows = previous->m_atlasRows;
+        m_atlasTop = previous->m_atlasTop;
+    }
+    return success();
 }
 
 void GpuMaterial::setWrap(WrapMode wrap) {
@@ -62,10 +136,10 @@ void GpuMaterial::setWrap(WrapMode wrap) {
     }
     m_wrap = wrap;
     if (m_height)
-        gl::setWrap(m_height, wrap);
-    for (const gl::Object* t : {&m_albedo, &m_normal, &m_orm}) {
+        gl::setWrap(*m_height, wrap);
+    for (const Texture* t : {&m_albedo, &m_normal, &m_orm}) {
         if (*t)
-            gl::setFilteredSampling(*t, wrap);
+            gl::setFilteredSampling(**t, wrap);
     }
 }
 
@@ -81,7 +155,7 @@ Status GpuMaterial::prepare(Technique technique) {
     const TechniqueInfo& ti = info(technique);
     if ((ti.parallax || ti.needsConeMap || ti.needsPyramid) && !m_height)
         return Error{"the " + std::string(ti.name) + " technique needs a height map"};
-    auto cone = [&](ConeKind kind, std::optional<ConeMap>& cpu, gl::Object& gpu) -> Status {
+    auto cone = [&](ConeKind kind, std::optional<ConeMap>& cpu, Texture& gpu) -> Status {
         if (gpu)
             return success();
         if (!cpu) {
@@ -92,7 +166,8 @@ Status GpuMaterial::prepare(Technique technique) {
         if (!t)
             return t.error();
         gl::setWrap(*t, m_wrap);
-        gpu = std::move(*t);
+        gpu = std::make_shared<const gl::Object>(std::move(*t));
+        ++m_uploads;
         return success();
     };
     if (ti.needsConeMap) {
@@ -105,7 +180,8 @@ Status GpuMaterial::prepare(Technique technique) {
     }
     if (ti.needsPyramid && !m_atlas) {
         if (!m_pyramidCpu) {
-            m_pyramidCpu = MaxMipPyramid::build(m_field, m_wrap);
+            m_pyramidCpu =
+                std::make_shared<const MaxMipPyramid>(MaxMipPyramid::build(m_field, m_wrap));
             ++m_bakes;
         }
         if (m_pyramidCpu->levels() > kMaxMipAtlasLevels)
@@ -113,7 +189,8 @@ Status GpuMaterial::prepare(Technique technique) {
         Result<gl::Object> t = gl::uploadMaxMipAtlas(*m_pyramidCpu, m_atlasRows);
         if (!t)
             return t.error();
-        m_atlas = std::move(*t);
+        m_atlas = std::make_shared<const gl::Object>(std::move(*t));
+        ++m_uploads;
         m_atlasTop = m_pyramidCpu->top();
     }
     return success();
@@ -130,16 +207,16 @@ void GpuMaterial::setConeMap(const ConeMap& cones) {
 }
 
 void GpuMaterial::setPyramid(const MaxMipPyramid& pyramid) {
-    m_pyramidCpu = pyramid;
+    m_pyramidCpu = std::make_shared<const MaxMipPyramid>(pyramid);
     m_atlas.reset();
 }
 
 void GpuMaterial::bind(const ShaderProgram& program) const {
-    auto unit = [](int u, const gl::Object& t) {
+    auto unit = [](int u, const Texture& t) {
         if (!t)
             return;
         glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(u));
-        glBindTexture(GL_TEXTURE_2D, t.id());
+        glBindTexture(GL_TEXTURE_2D, t->id());
     };
     unit(TextureUnit::Height, m_height);
     const Technique t = program.key().technique;

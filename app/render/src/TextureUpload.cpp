@@ -5,9 +5,11 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <string>
 
 namespace px::gl {
@@ -39,16 +41,33 @@ bool anisotropyAvailable() {
     return false;
 }
 
-// Creates a 2D texture from float texels converted by GL to `internalFormat`.
+// Level 0 goes up in bands of rows of about this many bytes: an 8192² map's conversion buffer
+// would otherwise cost as much as the texture (and llvmpipe keeps both in the process).
+constexpr std::size_t kBandBytes = std::size_t(4) << 20;
+
+// Writes rows [y0, y0 + rows) as the texture's `format`/`type` texels into `scratch` (resized to
+// fit) and returns them, or returns a pointer into the source when it needs no conversion.
+using RowSource = std::function<const void*(int y0, int rows, std::vector<std::byte>& scratch)>;
+
+// Creates a 2D texture of `internalFormat` from `source`, band by band.
 Result<Object> makeTexture(int width, int height, GLenum internalFormat, GLenum format, GLenum type,
-                           const void* data, bool mipmaps, const char* what) {
+                           std::size_t texelBytes, const RowSource& source, bool mipmaps,
+                           const char* what) {
     if (Status s = checkSize(width, height, what); !s)
         return s.error();
     Object texture(ObjectKind::Texture);
     glBindTexture(GL_TEXTURE_2D, texture.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width, height, 0, format,
-                 type, data);
+                 type, nullptr);
+    const int band =
+        static_cast<int>(std::max<std::size_t>(1, kBandBytes / (texelBytes * std::size_t(width))));
+    std::vector<std::byte> scratch;
+    for (int y0 = 0; y0 < height; y0 += band) {
+        const int rows = std::min(band, height - y0);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, y0, width, rows, format, type,
+                        source(y0, rows, scratch));
+    }
     if (mipmaps) {
         glGenerateMipmap(GL_TEXTURE_2D);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
@@ -63,6 +82,28 @@ Result<Object> makeTexture(int width, int height, GLenum internalFormat, GLenum 
     if (Status s = checkGlError(std::string("uploading the ") + what); !s)
         return s.error();
     return texture;
+}
+
+// A source that reads rows straight out of contiguous texels of `texelBytes` each.
+RowSource rowsOf(const void* texels, int width, std::size_t texelBytes) {
+    return [=](int y0, int, std::vector<std::byte>&) -> const void* {
+        return static_cast<const std::byte*>(texels) +
+               static_cast<std::size_t>(y0) * width * texelBytes;
+    };
+}
+
+// A source that converts each band to `T`, `perTexel` values a texel, with
+// `convert(x, y, T* out)`.
+template <class T, class Convert> RowSource converted(int width, int perTexel, Convert convert) {
+    return [=](int y0, int rows, std::vector<std::byte>& scratch) -> const void* {
+        const std::size_t values = static_cast<std::size_t>(width) * rows * perTexel;
+        scratch.resize(values * sizeof(T));
+        T* out = reinterpret_cast<T*>(scratch.data());
+        for (int y = y0; y < y0 + rows; ++y)
+            for (int x = 0; x < width; ++x, out += perTexel)
+                convert(x, y, out);
+        return scratch.data();
+    };
 }
 
 float srgbToLinear(float c) {
@@ -93,49 +134,52 @@ bool fitsR16(const HeightField& field) {
 
 Result<Object> uploadHeight(const HeightField& field, HeightFormat format) {
     if (format == HeightFormat::R16) {
-        std::vector<std::uint16_t> texels(field.texels.size());
-        std::transform(field.texels.begin(), field.texels.end(), texels.begin(), [](float h) {
-            return static_cast<std::uint16_t>(std::nearbyint(std::clamp(h, 0.0f, 1.0f) * 65535.0f));
-        });
-        return makeTexture(field.width, field.height, GL_R16, GL_RED, GL_UNSIGNED_SHORT,
-                           texels.data(), true, "height map");
+        const float* h = field.texels.data();
+        const int w = field.width;
+        return makeTexture(
+            field.width, field.height, GL_R16, GL_RED, GL_UNSIGNED_SHORT, 2,
+            converted<std::uint16_t>(w, 1,
+                                     [h, w](int x, int y, std::uint16_t* out) {
+                                         const float v = h[static_cast<std::size_t>(y) * w + x];
+                                         *out = static_cast<std::uint16_t>(
+                                             std::nearbyint(std::clamp(v, 0.0f, 1.0f) * 65535.0f));
+                                     }),
+            true, "height map");
     }
-    return makeTexture(field.width, field.height, GL_R32F, GL_RED, GL_FLOAT, field.texels.data(),
-                       true, "height map");
+    return makeTexture(field.width, field.height, GL_R32F, GL_RED, GL_FLOAT, 4,
+                       rowsOf(field.texels.data(), field.width, 4), true, "height map");
 }
 
 Result<Object> uploadAlbedo(const Image& albedo) {
-    std::vector<float> rgba(static_cast<std::size_t>(albedo.width) * albedo.height * 4, 1.0f);
-    for (int y = 0; y < albedo.height; ++y) {
-        for (int x = 0; x < albedo.width; ++x) {
-            float* out = &rgba[(static_cast<std::size_t>(y) * albedo.width + x) * 4];
-            const int c = albedo.channels;
-            for (int k = 0; k < 3; ++k)
-                out[k] = srgbToLinear(albedo.at(x, y, c >= 3 ? k : 0));
-            if (c == 2 || c >= 4)
-                out[3] = albedo.at(x, y, c == 2 ? 1 : 3);
-        }
-    }
-    return makeTexture(albedo.width, albedo.height, GL_RGBA16F, GL_RGBA, GL_FLOAT, rgba.data(),
+    const Image* a = &albedo;
+    return makeTexture(albedo.width, albedo.height, GL_RGBA16F, GL_RGBA, GL_FLOAT, 16,
+                       converted<float>(albedo.width, 4,
+                                        [a](int x, int y, float* out) {
+                                            const int c = a->channels;
+                                            for (int k = 0; k < 3; ++k)
+                                                out[k] = srgbToLinear(a->at(x, y, c >= 3 ? k : 0));
+                                            out[3] = c == 2 || c >= 4 ? a->at(x, y, c == 2 ? 1 : 3)
+                                                                      : 1.0f;
+                                        }),
                        true, "albedo map");
 }
 
 Result<Object> uploadNormalMap(const Image& normal) {
     if (normal.channels < 3)
         return Error{"the normal map needs 3 channels, it has " + std::to_string(normal.channels)};
-    std::vector<float> rgba(static_cast<std::size_t>(normal.width) * normal.height * 4, 1.0f);
-    for (int y = 0; y < normal.height; ++y) {
-        for (int x = 0; x < normal.width; ++x) {
-            for (int k = 0; k < 3; ++k)
-                rgba[(static_cast<std::size_t>(y) * normal.width + x) * 4 + k] = normal.at(x, y, k);
-        }
-    }
-    return makeTexture(normal.width, normal.height, GL_RGBA16, GL_RGBA, GL_FLOAT, rgba.data(), true,
-                       "normal map");
+    const Image* n = &normal;
+    return makeTexture(normal.width, normal.height, GL_RGBA16, GL_RGBA, GL_FLOAT, 16,
+                       converted<float>(normal.width, 4,
+                                        [n](int x, int y, float* out) {
+                                            for (int k = 0; k < 3; ++k)
+                                                out[k] = n->at(x, y, k);
+                                            out[3] = 1.0f;
+                                        }),
+                       true, "normal map");
 }
 
 Result<Object> uploadOrm(const Image* ao, const Image* roughness, const Image* metallic) {
-    const Image* maps[3] = {ao, roughness, metallic};
+    const std::array<const Image*, 3> maps = {ao, roughness, metallic};
     int width = 0, height = 0;
     for (const Image* m : maps) {
         if (m && !m->empty() && m->width * m->height > width * height) {
@@ -145,33 +189,37 @@ Result<Object> uploadOrm(const Image* ao, const Image* roughness, const Image* m
     }
     if (width == 0)
         return Error{"no occlusion, roughness or metallic map to pack"};
-    std::vector<float> rgba(static_cast<std::size_t>(width) * height * 4, 1.0f);
-    for (int k = 0; k < 3; ++k) {
-        const Image* m = maps[k];
-        if (!m || m->empty())
-            continue;
-        for (int y = 0; y < height; ++y) {
-            for (int x = 0; x < width; ++x) {
-                const float v = m->width == width && m->height == height
-                                    ? m->at(x, y, 0)
-                                    : bilinear(*m, 0, (x + 0.5f) / width, (y + 0.5f) / height);
-                rgba[(static_cast<std::size_t>(y) * width + x) * 4 + k] = v;
-            }
-        }
-    }
-    return makeTexture(width, height, GL_RGBA16, GL_RGBA, GL_FLOAT, rgba.data(), true,
-                       "occlusion/roughness/metallic map");
+    return makeTexture(width, height, GL_RGBA16, GL_RGBA, GL_FLOAT, 16,
+                       converted<float>(width, 4,
+                                        [maps, width, height](int x, int y, float* out) {
+                                            for (int k = 0; k < 3; ++k) {
+                                                const Image* m = maps[k];
+                                                out[k] = !m || m->empty() ? 1.0f
+                                                         : m->width == width && m->height == height
+                                                             ? m->at(x, y, 0)
+                                                             : bilinear(*m, 0, (x + 0.5f) / width,
+                                                                        (y + 0.5f) / height);
+                                            }
+                                            out[3] = 1.0f;
+                                        }),
+                       true, "occlusion/roughness/metallic map");
 }
 
 Result<Object> uploadConeMap(const HeightField& field, const ConeMap& cones) {
     if (cones.width != field.width || cones.height != field.height)
         return Error{"the cone map's size differs from the height map's"};
-    std::vector<float> rg(field.texels.size() * 2);
-    for (std::size_t i = 0; i < field.texels.size(); ++i) {
-        rg[2 * i] = field.texels[i];
-        rg[2 * i + 1] = cones.sqrtRatio[i];
-    }
-    return uploadRg32f(field.width, field.height, rg);
+    const float* h = field.texels.data();
+    const float* g = cones.sqrtRatio.data();
+    const int w = field.width;
+    return makeTexture(field.width, field.height, GL_RG32F, GL_RG, GL_FLOAT, 8,
+                       converted<float>(w, 2,
+                                        [h, g, w](int x, int y, float* out) {
+                                            const std::size_t i =
+                                                static_cast<std::size_t>(y) * w + x;
+                                            out[0] = h[i];
+                                            out[1] = g[i];
+                                        }),
+                       false, "cone map");
 }
 
 Result<Object> uploadMaxMipAtlas(const MaxMipPyramid& pyramid, std::vector<int>& rows) {
@@ -179,12 +227,13 @@ Result<Object> uploadMaxMipAtlas(const MaxMipPyramid& pyramid, std::vector<int>&
     rows.clear();
     for (int level = 0; level < pyramid.levels(); ++level)
         rows.push_back(pyramid.atlasRow(level));
-    return makeTexture(atlas.width, atlas.height, GL_R32F, GL_RED, GL_FLOAT, atlas.pixels.data(),
-                       false, "max-mip pyramid");
+    return makeTexture(atlas.width, atlas.height, GL_R32F, GL_RED, GL_FLOAT, 4,
+                       rowsOf(atlas.pixels.data(), atlas.width, 4), false, "max-mip pyramid");
 }
 
 Result<Object> uploadRg32f(int width, int height, const std::vector<float>& texels) {
-    return makeTexture(width, height, GL_RG32F, GL_RG, GL_FLOAT, texels.data(), false, "cone map");
+    return makeTexture(width, height, GL_RG32F, GL_RG, GL_FLOAT, 8, rowsOf(texels.data(), width, 8),
+                       false, "cone map");
 }
 
 void setWrap(const Object& texture, WrapMode wrap) {

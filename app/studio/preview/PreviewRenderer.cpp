@@ -42,13 +42,27 @@ QOpenGLFunctions* gl() {
     return QOpenGLContext::currentContext()->functions();
 }
 
+// A material's maps on the GPU, for every view that shows them: the views' contexts share their
+// textures (AA_ShareOpenGLContexts, GlSupport.cpp), so two views of an 8192² map hold one copy.
+struct Upload {
+    std::shared_ptr<const MaterialAssets> assets;
+    WrapMode wrap = WrapMode::Repeat;
+    std::shared_ptr<GpuMaterial> gpu;
+};
+
+// The uploads some view still holds (GUI thread only, where every view draws).
+std::vector<std::weak_ptr<Upload>>& liveUploads() {
+    static std::vector<std::weak_ptr<Upload>> uploads;
+    std::erase_if(uploads, [](const std::weak_ptr<Upload>& u) { return u.expired(); });
+    return uploads;
+}
+
 } // namespace
 
 struct PreviewRenderer::Impl {
     std::unique_ptr<Renderer> renderer;
-    std::unique_ptr<GpuMaterial> gpu;
-    std::shared_ptr<const MaterialAssets> uploaded; // what `gpu` holds
-    WrapMode uploadedWrap = WrapMode::Repeat;
+    std::shared_ptr<Upload> upload;            // the maps this view draws with
+    GpuMaterial* gpu = nullptr;                // upload's
     std::optional<VariantKey> lastKey;         // the variant of the last frame (uniformValue)
     std::optional<RenderTarget> surfaceTarget; // float (u, v, t, fetches), the view's size
     std::shared_ptr<const PrefilteredEnvironment> uploadedEnvironment; // what gpuEnvironment holds
@@ -68,17 +82,32 @@ struct PreviewRenderer::Impl {
         return success();
     }
 
-    // Uploads the scene's maps when they are not the ones on the GPU.
+    // Uploads the scene's maps when they are not the ones on the GPU: takes another view's upload
+    // of the same maps, else makes one that keeps the textures of the maps that did not change
+    // (after a bake only the new map goes up; after an undo, none).
     Status sync(const PreviewScene& scene) {
-        if (gpu && uploaded == scene.assets && uploadedWrap == scene.material.wrap)
+        const WrapMode wrap = scene.material.wrap;
+        if (upload && upload->assets == scene.assets && upload->wrap == wrap)
             return success();
+        std::vector<std::weak_ptr<Upload>>& uploads = liveUploads();
+        std::shared_ptr<Upload> previous = upload;
+        for (const std::weak_ptr<Upload>& weak : uploads) {
+            std::shared_ptr<Upload> other = weak.lock();
+            if (other && other->assets == scene.assets && other->wrap == wrap) {
+                upload = other;
+                gpu = upload->gpu.get();
+                return success();
+            }
+            if (other && !previous)
+                previous = other;
+        }
         Result<std::unique_ptr<GpuMaterial>> created =
-            GpuMaterial::create(*scene.assets, scene.material.wrap);
+            GpuMaterial::create(*scene.assets, wrap, previous ? previous->gpu.get() : nullptr);
         if (!created)
             return created.error();
-        gpu = std::move(*created);
-        uploaded = scene.assets;
-        uploadedWrap = scene.material.wrap;
+        upload = std::make_shared<Upload>(Upload{scene.assets, wrap, std::move(*created)});
+        gpu = upload->gpu.get();
+        uploads.push_back(upload);
         return success();
     }
 
@@ -229,6 +258,10 @@ Result<PreviewStats> PreviewRenderer::measure(const PreviewScene& scene, QSize p
     stats.valid = true;
     m_heatMap = scene.overlays.heatMap ? heatMapImage(errors) : QImage();
     return stats;
+}
+
+const GpuMaterial* PreviewRenderer::gpuMaterial() const {
+    return m_impl->gpu;
 }
 
 std::optional<float> PreviewRenderer::uniformValue(const std::string& name) {

@@ -13,6 +13,10 @@
 #include <optional>
 #include <string>
 
+namespace px {
+class GpuMaterial;
+}
+
 namespace px::studio {
 
 class PreviewRenderer {
@@ -29,6 +33,8 @@ public:
     Result<PreviewStats> measure(const PreviewScene& scene, QSize pixels, double frameMs);
     QImage heatMap() const { return m_heatMap; }
     std::optional<float> uniformValue(const std::string& name);
+    // The maps this view last drew with (views showing the same maps share one), for tests.
+    const GpuMaterial* gpuMaterial() const;
 
 private:
     PreviewRenderer() = default;

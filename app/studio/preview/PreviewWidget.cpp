@@ -82,6 +82,10 @@ std::optional<float> PreviewWidget::uniformValue(const QString& name) {
     return value;
 }
 
+const GpuMaterial* PreviewWidget::gpuMaterial() const {
+    return m_renderer ? m_renderer->gpuMaterial() : nullptr;
+}
+
 Result<Image> PreviewWidget::renderImage(const PreviewScene& scene, QSize pixels) {
     if (!m_renderer)
         return Error{"there is no live preview to render with"};

@@ -12,6 +12,10 @@
 #include <memory>
 #include <optional>
 
+namespace px {
+class GpuMaterial;
+}
+
 namespace px::studio {
 
 class PreviewRenderer;
@@ -32,6 +36,8 @@ public:
     // The value a uniform of the program that drew the last frame holds (tests: sliders reach
     // the GPU). Empty when the program has no such uniform.
     std::optional<float> uniformValue(const QString& name);
+    // The maps the last frame drew with; views showing the same maps share them (tests).
+    const GpuMaterial* gpuMaterial() const;
 
     // `scene` drawn offscreen at `pixels` on this view's context, without the overlays (heat map,
     // messages): a picture to save. Fails without a live preview or over the GL's limits.

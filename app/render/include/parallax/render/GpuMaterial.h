@@ -23,7 +23,12 @@ public:
     // Uploads every map present in `assets` (an empty member is an absent map). Fails, naming
     // the map, when one is larger than the GL allows or malformed (a normal map without 3
     // channels). Cone maps in `assets` are kept (CPU side) and uploaded when a technique asks.
-    static Result<std::unique_ptr<GpuMaterial>> create(const MaterialAssets& assets, WrapMode wrap);
+    // With `previous` (same wrap), a map whose texels are the very ones `previous` uploaded (the
+    // same shared buffer, as after a bake or an undo: not an equal copy) takes its texture over
+    // instead of uploading it again; the two then share it until both are gone, so it must be
+    // used in the same GL share group, and setWrap() on one changes the other's sampling.
+    static Result<std::unique_ptr<GpuMaterial>> create(const MaterialAssets& assets, WrapMode wrap,
+                                                       const GpuMaterial* previous = nullptr);
 
     // Makes sure the maps `technique` reads are on the GPU: bakes (synchronously) and uploads the
     // cone map, the relaxed cone map or the pyramid if needed. Cheap when they are there.
@@ -45,26 +50,34 @@ public:
     const HeightField& heightField() const { return m_field; }
     // Bakes performed so far (cone, relaxed cone, pyramid), for tests and the status bar.
     int bakeCount() const { return m_bakes; }
+    // Textures uploaded by this material (not taken over from `previous`), for tests.
+    int uploadCount() const { return m_uploads; }
 
     // Binds every texture present to its unit and sets the map-derived uniforms (height max,
     // pyramid rows) on `program`.
     void bind(const ShaderProgram& program) const;
 
 private:
+    using Texture = std::shared_ptr<const gl::Object>;
     GpuMaterial() = default;
+    Status uploadMaps(const MaterialAssets& assets, const GpuMaterial* previous);
 
     WrapMode m_wrap = WrapMode::Repeat;
     HeightField m_field;
+    // The maps the textures were made from: their texels tell whether a new material's are the
+    // same (SharedTexels::sharesWith).
+    Image m_albedoMap, m_normalMap, m_aoMap, m_roughnessMap, m_metallicMap;
     float m_heightMax = 1.0f;
     bool m_height16 = false;
-    gl::Object m_height, m_albedo, m_normal, m_orm;
+    Texture m_height, m_albedo, m_normal, m_orm;
     // Derived maps: CPU copy (given or baked) and GPU texture.
     std::optional<ConeMap> m_coneCpu, m_relaxedCpu;
-    std::optional<MaxMipPyramid> m_pyramidCpu;
-    gl::Object m_cone, m_relaxed, m_atlas;
+    std::shared_ptr<const MaxMipPyramid> m_pyramidCpu;
+    Texture m_cone, m_relaxed, m_atlas;
     std::vector<int> m_atlasRows;
     int m_atlasTop = 0;
     int m_bakes = 0;
+    int m_uploads = 0;
 };
 
 } // namespace px
