@@ -2,35 +2,45 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
+#include <vector>
 
 namespace px::studio {
 
 namespace {
 
-// Box-filters a W x H source of `channels` values, read by `at`, into an 8-bit RGB image.
-QImage downsample(int w, int h, int channels, int maxSide,
-                  const std::function<float(int, int, int)>& at) {
+// Box-filters a W x H source of `channels` (1 or 3) values, read by `at(x, y, c)`, into an 8-bit
+// RGB image. A template, not a std::function: the editor redraws an 8192² map's thumbnail on the
+// GUI thread after each load and bake, and a call per texel and channel cost a second there.
+template <class At> QImage downsample(int w, int h, int channels, int maxSide, const At& at) {
     if (w <= 0 || h <= 0)
         return {};
     const int step = std::max(1, static_cast<int>(std::ceil(std::max(w, h) / double(maxSide))));
     const int ow = std::max(1, w / step), oh = std::max(1, h / step);
     QImage out(ow, oh, QImage::Format_RGB888);
+    std::vector<float> sums(static_cast<std::size_t>(ow) * 3);
     for (int y = 0; y < oh; ++y) {
-        uchar* line = out.scanLine(y);
-        for (int x = 0; x < ow; ++x) {
-            float sum[3] = {0, 0, 0};
-            int n = 0;
-            for (int sy = y * step; sy < std::min(h, (y + 1) * step); ++sy) {
-                for (int sx = x * step; sx < std::min(w, (x + 1) * step); ++sx) {
-                    for (int c = 0; c < 3; ++c)
-                        sum[c] += at(sx, sy, std::min(c, channels - 1));
-                    ++n;
+        std::fill(sums.begin(), sums.end(), 0.0f);
+        const int y1 = std::min(h, (y + 1) * step);
+        for (int sy = y * step; sy < y1; ++sy) {
+            for (int x = 0; x < ow; ++x) {
+                float* sum = &sums[static_cast<std::size_t>(x) * 3];
+                for (int c = 0; c < channels; ++c) {
+                    float s = 0.0f;
+                    for (int sx = x * step; sx < (x + 1) * step; ++sx)
+                        s += at(sx, sy, c);
+                    sum[c] += s;
                 }
             }
-            for (int c = 0; c < 3; ++c)
-                line[x * 3 + c] = static_cast<uchar>(
-                    std::lround(std::clamp(sum[c] / std::max(1, n), 0.0f, 1.0f) * 255.0f));
+        }
+        const float n = static_cast<float>((y1 - y * step) * step);
+        uchar* line = out.scanLine(y);
+        for (int x = 0; x < ow; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const float mean =
+                    sums[static_cast<std::size_t>(x) * 3 + (channels == 1 ? 0 : c)] / n;
+                line[x * 3 + c] =
+                    static_cast<uchar>(std::lround(std::clamp(mean, 0.0f, 1.0f) * 255.0f));
+            }
         }
     }
     return out;
@@ -39,7 +49,8 @@ QImage downsample(int w, int h, int channels, int maxSide,
 } // namespace
 
 QImage toQImage(const Image& image, int maxSide) {
-    return downsample(image.width, image.height, std::min(image.channels, 3), maxSide,
+    const int channels = image.channels >= 3 ? 3 : 1;
+    return downsample(image.width, image.height, channels, maxSide,
                       [&](int x, int y, int c) { return image.at(x, y, c); });
 }
 
