@@ -187,6 +187,8 @@ void RendererTest::renderedHitsOnLoadedMeshes_data() {
     QTest::newRow("torus, generated tangents (obj)") << "torus.obj";
     QTest::newRow("torus, its own tangents (glb)") << "torus-tangents.glb";
     QTest::newRow("non-uniformly scaled sphere (gltf)") << "scaled.gltf";
+    // Its own tangents under a glTF node's non-uniform scale (1.6, 1, 0.6): they go by the scale.
+    QTest::newRow("torus, its own tangents, node scale (gltf)") << "node-scaled-tangents.gltf";
     QTest::newRow("mirrored sphere (obj)") << "mirrored.obj";
     // The same torus through a uv set twice as dense: T and B half as long, the relief half as
     // deep in the world.
@@ -201,11 +203,13 @@ void RendererTest::renderedHitsOnLoadedMeshes() {
     QFETCH(QString, name);
     QTemporaryDir dir;
     const std::string file = dir.filePath(name).toStdString();
-    test::TestMesh source = name.startsWith("torus") || name.startsWith("two-sets")
-                                ? test::torus(32, 16, name.contains("tangents"), 20.0f)
-                            : name.startsWith("scaled")
-                                ? test::scaled(test::seamedSphere(32, 16), {1.6f, 1.0f, 0.6f})
-                                : test::mirroredSphere(32, 16);
+    test::TestMesh source =
+        name.startsWith("torus") || name.startsWith("two-sets") || name.startsWith("node")
+            ? test::torus(32, 16, name.contains("tangents"), 20.0f)
+        : name.startsWith("scaled") ? test::scaled(test::seamedSphere(32, 16), {1.6f, 1.0f, 0.6f})
+                                    : test::mirroredSphere(32, 16);
+    if (name.startsWith("node"))
+        source.nodeScale = {1.6f, 1.0f, 0.6f};
     MeshLoadOptions load;
     if (name.startsWith("two-sets")) {
         for (const glm::vec2& uv : source.uvs)
@@ -215,6 +219,7 @@ void RendererTest::renderedHitsOnLoadedMeshes() {
     QVERIFY(name.endsWith(".obj") ? test::writeObj(file, source) : test::writeGltf(file, source));
     Result<LoadedMesh> loaded = loadMesh(file, load);
     QVERIFY(loaded.ok());
+    QCOMPARE(loaded->fileTangents, name.contains("tangents"));
     auto mesh = std::make_shared<const MeshData>(loaded->mesh);
 
     const HeightField field = makeProceduralMap(ProceduralMap::Noise, 32, 32, 4);
