@@ -75,8 +75,9 @@ public:
     bool loadMesh(const QString& path, int uvSet = 0);
     RecentFiles* recentMeshes() const { return m_recentMeshes; }
     // Image-based light in the active viewport (all while linked): "" none, "sky" the built-in one
-    // (its sun where the light is now), else an HDR/EXR file; made in the background. A failure
-    // shows a message naming the file and keeps the environment drawn before.
+    // (its sun where the light is, following it: SkyFollower.h), else an HDR/EXR file; made in the
+    // background. A failure shows a message naming the file and keeps the environment drawn
+    // before.
     bool setEnvironment(const QString& source);
     // Pictures out (MainWindowPictures.cpp), rendered offscreen at `size` pixels per view without
     // the overlays, written atomically as PNG: the active view, or every shown view side by side
