@@ -205,6 +205,56 @@ private slots:
         QVERIFY(w->statusBar()->currentMessage().contains("uv set 1 of 2"));
     }
 
+    // The uv set goes with a remembered mesh: the recent meshes read a file again with the set it
+    // was last shown with, a material opened again gets its mesh with its set, and a set the file
+    // no longer has falls back to the first without a message.
+    void uvSetIsRemembered() {
+        const QString material = m_dir.filePath("uv-set.json");
+        px::test::TestMesh torus = px::test::torus(16, 8, false);
+        for (const glm::vec2& uv : torus.uvs)
+            torus.uvs2.push_back(2.0f * uv);
+        const QString file = write("sets.glb", torus);
+        {
+            auto w = makeWindow();
+            QVERIFY(w);
+            QVERIFY(w->saveTo(material));
+            QVERIFY(w->loadMesh(file));
+            QCOMPARE(w->viewports()->activeView().meshUvSet, 0);
+            w->viewPanel()->uvSet()->setValue(1);
+            QCOMPARE(w->viewports()->activeView().meshUvSet, 1);
+            QCOMPARE(MainWindow::rememberedMeshUvSet(material), 1);
+            QComboBox* combo = w->viewPanel()->mesh();
+            combo->setCurrentIndex(combo->findText("cube"));
+            QVERIFY(!w->viewports()->activeView().meshData);
+            combo->setCurrentIndex(combo->findText("sets.glb"));
+            QCOMPARE(w->viewports()->activeView().meshUvSet, 1);
+            QCOMPARE(w->viewPanel()->uvSet()->value(), 1);
+            QVERIFY(w->statusBar()->currentMessage().contains("uv set 1 of 2"));
+        }
+        {
+            auto w = makeWindow(); // another session: the settings are what it has
+            QVERIFY(w);
+            QVERIFY(w->openFile(material));
+            QCOMPARE(w->viewports()->activeView().meshFile, QFileInfo(file).absoluteFilePath());
+            QCOMPARE(w->viewports()->activeView().meshUvSet, 1);
+            QComboBox* combo = w->viewPanel()->mesh();
+            combo->setCurrentIndex(combo->findText("sphere"));
+            // Choosing set 0 is remembered too.
+            combo->setCurrentIndex(combo->findText("sets.glb"));
+            QCOMPARE(w->viewports()->activeView().meshUvSet, 1);
+            w->viewPanel()->uvSet()->setValue(0);
+            QCOMPARE(MainWindow::rememberedMeshUvSet(material), 0);
+            w->viewPanel()->uvSet()->setValue(1);
+        }
+        QVERIFY(!write("sets.glb", px::test::torus(16, 8, false)).isEmpty()); // one set now
+        auto w = makeWindow();
+        QVERIFY(w);
+        QVERIFY(w->openFile(material));
+        QCOMPARE(w->viewports()->activeView().meshFile, QFileInfo(file).absoluteFilePath());
+        QCOMPARE(w->viewports()->activeView().meshUvSet, 0);
+        QVERIFY2(w->lastProblem().isEmpty(), qPrintable(w->lastProblem()));
+    }
+
     // The mesh belongs to the editor's settings for the material file, not to the file.
     void materialRemembersItsMesh() {
         const QString material = m_dir.filePath("bricks.json");

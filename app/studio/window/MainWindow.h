@@ -9,6 +9,7 @@
 // MainWindowActions.h holds the actions more than one of them reach (private to the window).
 
 #include "jobs/BakeRunner.h"
+#include "parallax/Result.h"
 #include "parallax/material/MapKind.h"
 #include "parallax/sample/ProceduralMaps.h"
 
@@ -24,7 +25,8 @@ class QMenu;
 
 namespace px {
 struct ImportedSet;
-}
+struct LoadedMesh;
+} // namespace px
 
 namespace px::studio {
 
@@ -71,8 +73,10 @@ public:
     // with progress, drawn by the active viewport (every viewport while linked), added to the
     // recent meshes and remembered for the material in the editor's settings (not in the material
     // file: the mesh is how this editor previews it, not part of it). A failure shows a message
-    // naming the file and keeps the mesh drawn before.
-    bool loadMesh(const QString& path, int uvSet = 0);
+    // naming the file and keeps the mesh drawn before. `uvSet` < 0: the set this file was last
+    // shown with (the first if it has no such set any more).
+    static constexpr int kRememberedUvSet = -1;
+    bool loadMesh(const QString& path, int uvSet = kRememberedUvSet);
     RecentFiles* recentMeshes() const { return m_recentMeshes; }
     // Image-based light in the active viewport (all while linked): "" none, "sky" the built-in one
     // (its sun where the light is, following it: SkyFollower.h), else an HDR/EXR file; made in the
@@ -85,8 +89,9 @@ public:
     // `frames` steps, FILE-000.png ... written as one set (a failure keeps the previous set).
     bool saveViewImage(const QString& file, QSize size, bool allViews);
     bool saveTurntable(const QString& file, QSize size, int frames);
-    // The mesh file remembered for a material file, or empty.
+    // The mesh file remembered for a material file, or empty, and the uv set it was shown with.
     static QString rememberedMesh(const QString& materialPath);
+    static int rememberedMeshUvSet(const QString& materialPath);
     // The last import's summary (hidden when not interactive; tests read and click it).
     ImportSummaryDialog* importSummary() const;
     // Bakes in the background; over a normal map loaded from a file it asks first.
@@ -135,6 +140,8 @@ private:
     void loadEnvironmentDialog();
     enum class PictureKind { ActiveView, AllViews, Turntable };
     void picturesDialog(PictureKind kind);
+    Result<LoadedMesh> readMesh(const QString& path, int uvSet);
+    bool loadMeshWith(const QString& path, int uvSet, bool remembered);
     void rememberMaterialMesh();
     void restoreMaterialMesh();
     void exportDialog();
