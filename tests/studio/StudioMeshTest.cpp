@@ -255,6 +255,61 @@ private slots:
         QVERIFY2(w->lastProblem().isEmpty(), qPrintable(w->lastProblem()));
     }
 
+    // A mesh load reports its progress: with the dialog's delay at 0 (a large mesh waits 300 ms
+    // for it) the dialog shows at once; the test holds the load on its loading thread at its
+    // first report past 0 until the dialog's bar shows it, then lets it go and the mesh arrives.
+    // Cancelled at the same point, the mesh drawn before stays.
+    void meshLoadReportsProgress() {
+        setBusyDialogDelay(0);
+        auto w = makeWindow();
+        QVERIFY(w);
+        const QString file = write("progress.glb", px::test::torus(64, 32, false));
+        for (const bool cancel : {false, true}) {
+            auto release = std::make_shared<std::promise<void>>();
+            std::shared_future<void> released = release->get_future().share();
+            auto held = std::make_shared<std::atomic<bool>>(false);
+            w->setMeshProgressObserver([held, released](float f) {
+                if (f > 0.0f && !held->exchange(true))
+                    released.wait();
+            });
+            int shownValue = -1;
+            QString label;
+            QTimer poll;
+            connect(&poll, &QTimer::timeout, this, [&] {
+                auto* dialog = w->findChild<QProgressDialog*>();
+                if (shownValue >= 0 || !held->load() || !dialog || !dialog->isVisible() ||
+                    dialog->value() <= 0)
+                    return;
+                shownValue = dialog->value();
+                label = dialog->labelText();
+                if (cancel) // the load stays held until loadMesh has returned
+                    QTest::mouseClick(dialog->findChild<QPushButton*>(), Qt::LeftButton);
+                else
+                    release->set_value();
+            });
+            poll.start(5);
+            const std::shared_ptr<const MeshData> before = w->viewports()->activeView().meshData;
+            const bool loaded = w->loadMesh(file);
+            poll.stop();
+            if (cancel)
+                release->set_value(); // the worker ends on its own; its mesh is dropped
+            QVERIFY2(shownValue > 0 && shownValue <= 100, qPrintable(QString::number(shownValue)));
+            QVERIFY2(label.startsWith("Loading progress.glb…"), qPrintable(label));
+            QCOMPARE(loaded, !cancel);
+            if (cancel) {
+                QVERIFY(w->viewports()->activeView().meshData == before);
+                QVERIFY(w->statusBar()->currentMessage().contains("cancelled"));
+            } else {
+                QVERIFY(w->viewports()->activeView().meshData);
+                QCOMPARE(w->viewports()->activeView().meshData->indices.size(),
+                         std::size_t(3 * 64 * 32 * 2));
+            }
+        }
+        w->setMeshProgressObserver({});
+        QThreadPool::globalInstance()->waitForDone(); // the cancelled load ends on its own
+        setBusyDialogDelay(300);
+    }
+
     // The mesh belongs to the editor's settings for the material file, not to the file.
     void materialRemembersItsMesh() {
         const QString material = m_dir.filePath("bricks.json");

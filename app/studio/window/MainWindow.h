@@ -15,6 +15,7 @@
 
 #include <QMainWindow>
 #include <QPointer>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -92,6 +93,11 @@ public:
     // The mesh file remembered for a material file, or empty, and the uv set it was shown with.
     static QString rememberedMesh(const QString& materialPath);
     static int rememberedMeshUvSet(const QString& materialPath);
+    // Tests: called on the loading thread with each progress report of a mesh load (a test holds
+    // the load there to see the progress dialog).
+    void setMeshProgressObserver(std::function<void(float)> observer) {
+        m_meshProgressObserver = std::move(observer);
+    }
     // The last import's summary (hidden when not interactive; tests read and click it).
     ImportSummaryDialog* importSummary() const;
     // Bakes in the background; over a normal map loaded from a file it asks first.
@@ -166,6 +172,7 @@ private:
     QPointer<ImportSummaryDialog> m_importSummary;
     QString m_lastProblem;
     bool m_interactive = true;
+    std::function<void(float)> m_meshProgressObserver;
     bool m_layoutRestored = false; // save it on close only if it was restored
 
     struct Actions;

@@ -60,11 +60,13 @@ Result<LoadedMesh> MainWindow::readMesh(const QString& path, int uvSet) {
     auto stop = std::make_shared<std::atomic<bool>>(false);
     Result<LoadedMesh> loaded = runInBackground<LoadedMesh>(
         this, tr("Loading %1…").arg(QFileInfo(path).fileName()),
-        [file = path.toStdString(), uvSet, progress, stop] {
+        [file = path.toStdString(), uvSet, progress, stop, observer = m_meshProgressObserver] {
             MeshLoadOptions options;
             options.uvSet = uvSet;
-            options.progress = [progress, stop](float f) {
+            options.progress = [progress, stop, observer](float f) {
                 progress->store(f);
+                if (observer)
+                    observer(f);
                 return !stop->load();
             };
             return px::loadMesh(file, options);
