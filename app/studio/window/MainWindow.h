@@ -87,7 +87,8 @@ public:
     // Pictures out (MainWindowPictures.cpp), rendered offscreen at `size` pixels per view without
     // the overlays, written atomically as PNG: the active view, or every shown view side by side
     // as the grid places them; a turntable of the active view, the camera orbiting once in
-    // `frames` steps, FILE-000.png ... written as one set (a failure keeps the previous set).
+    // `frames` steps, FILE-000.png ... written as one set, one frame per turn of the event loop
+    // under a progress dialog with Cancel (a failure or a cancel keeps the previous set).
     bool saveViewImage(const QString& file, QSize size, bool allViews);
     bool saveTurntable(const QString& file, QSize size, int frames);
     // The mesh file remembered for a material file, or empty, and the uv set it was shown with.
