@@ -23,8 +23,8 @@
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QThreadPool>
-#include <QToolButton>
 #include <QTimer>
+#include <QToolButton>
 #include <atomic>
 #include <future>
 #include <limits>
@@ -293,6 +293,8 @@ private slots:
             poll.stop();
             if (cancel)
                 release->set_value(); // the worker ends on its own; its mesh is dropped
+            qInfo("%s: the dialog's bar at %d %% while the load was held",
+                  cancel ? "cancel" : "load", shownValue);
             QVERIFY2(shownValue > 0 && shownValue <= 100, qPrintable(QString::number(shownValue)));
             QVERIFY2(label.startsWith("Loading progress.glb…"), qPrintable(label));
             QCOMPARE(loaded, !cancel);
@@ -365,8 +367,8 @@ private slots:
             const QPointF expected = projectDirection(camera, light.direction(), image.size());
             const QPointF found = brightestSky(image, camera);
             qInfo("light at azimuth %g: sun drawn at (%.1f, %.1f), seen at (%.1f, %.1f), %d x %d",
-                  light.azimuthDeg, found.x(), found.y(), expected.x(), expected.y(),
-                  image.width(), image.height());
+                  light.azimuthDeg, found.x(), found.y(), expected.x(), expected.y(), image.width(),
+                  image.height());
             QVERIFY2(QLineF(found, expected).length() < 0.03 * image.width(),
                      qPrintable(QString("sun drawn at (%1, %2), the light is at (%3, %4)")
                                     .arg(found.x())
