@@ -92,7 +92,10 @@ int runStudio(int argc, char** argv) {
         return 1;
     if (!opened) // no file, or it could not be opened (the message says why): the sample
         window.newSample(options->sample, options->sampleSize);
-    if (!options->mesh.isEmpty() && !window.loadMesh(options->mesh) && screenshot)
+    // A screenshot reads the first uv set, whatever the settings remember: the same every time.
+    if (!options->mesh.isEmpty() &&
+        !window.loadMesh(options->mesh, screenshot ? 0 : MainWindow::kRememberedUvSet) &&
+        screenshot)
         return 1;
     if (!options->environment.isEmpty() && !window.setEnvironment(options->environment) &&
         screenshot)

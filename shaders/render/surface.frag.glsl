@@ -12,6 +12,9 @@ in vec3 vBitangent;
 
 layout(location = 0) out vec4 pxFragColor;
 
+// cos 89 degrees: the surface output's steepest view (see its end).
+#define PX_STEEPEST_MEASURED_COS 0.0174524064
+
 vec3 pxSafeNormalize(vec3 v, vec3 fallback) {
     float len2 = dot(v, v);
     return len2 > 1.0e-30 ? v * inversesqrt(len2) : fallback;
@@ -97,8 +100,13 @@ void main() {
 #endif
 
 #if defined(PX_HAS_SURFACE_OUTPUT)
-    // What the trace found, for inspection and tests: the same layout as the trace pass.
-    pxFragColor = vec4(tile + hit, t, float(pxFetches));
+    // What the trace found, for inspection and tests: the same layout as the trace pass. Where the
+    // view meets the pixel's tangent plane more than 89 degrees from its normal (a mesh's rims,
+    // where the interpolated normal turns away; past 90 there is no ray into the relief and P is
+    // held at a grazing angle above), t is -2: a surface, left out of the error figures
+    // (docs/meshes.md). 89 degrees is the steepest view measured anywhere (the orbit's limit).
+    bool steep = dot(N, toCamera) < PX_STEEPEST_MEASURED_COS * length(toCamera);
+    pxFragColor = vec4(tile + hit, steep ? -2.0 : t, float(pxFetches));
 #else
 #if defined(PX_HAS_NORMAL_MAP)
     vec3 m = textureGrad(pxNormalMap, hit, uvDx, uvDy).xyz * 2.0 - 1.0;

@@ -5,6 +5,11 @@
 #include "StudioTestSupport.h"
 #include "parallax/image/ImageFile.h"
 
+#include <QDir>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QStatusBar>
+#include <QTimer>
 #include <cmath>
 
 using namespace px;
@@ -97,6 +102,50 @@ private slots:
             QVERIFY2(difference(frames[i - 1], frames[i]) > 2.0,
                      qPrintable(QString::number(difference(frames[i - 1], frames[i]))));
         QVERIFY(!QFileInfo::exists(m_dir.filePath("spin-004.png")));
+    }
+
+    // The turntable renders one frame per turn of the event loop under a progress dialog: events
+    // run before every frame (the poll sees each frame's number), and Cancel at the fourth of six
+    // frames writes nothing: the previous set stays byte for byte, no frame or temporary is left.
+    void turntableCancelsBetweenFrames() {
+        auto w = makeWindow(1, 32);
+        QVERIFY(w);
+        QTemporaryDir dir;
+        const QString file = dir.filePath("turn.png");
+        QVERIFY(w->saveTurntable(file, QSize(48, 32), 3));
+        const QDir folder(dir.path());
+        const QDir::Filters all = QDir::Files | QDir::Hidden | QDir::System;
+        const QStringList previous = folder.entryList(all, QDir::Name);
+        QCOMPARE(previous, (QStringList{"turn-000.png", "turn-001.png", "turn-002.png"}));
+        QList<QByteArray> bytes;
+        for (const QString& name : previous) {
+            QFile f(folder.filePath(name));
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            bytes << f.readAll();
+        }
+        QList<int> seen; // the dialog's value each time the poll ran
+        QTimer poll;
+        connect(&poll, &QTimer::timeout, this, [&] {
+            auto* dialog = w->findChild<QProgressDialog*>();
+            if (!dialog || !dialog->isVisible() || dialog->wasCanceled())
+                return;
+            if (seen.isEmpty() || seen.back() != dialog->value())
+                seen << dialog->value();
+            if (dialog->value() == 3)
+                QTest::mouseClick(dialog->findChild<QPushButton*>(), Qt::LeftButton);
+        });
+        poll.start(0);
+        QVERIFY(!w->saveTurntable(file, QSize(48, 32), 6));
+        poll.stop();
+        QCOMPARE(seen, (QList<int>{0, 1, 2, 3}));
+        QVERIFY(w->lastProblem().isEmpty());
+        QVERIFY(w->statusBar()->currentMessage().contains("cancelled"));
+        QCOMPARE(folder.entryList(all, QDir::Name), previous);
+        for (int i = 0; i < previous.size(); ++i) {
+            QFile f(folder.filePath(previous[i]));
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            QVERIFY2(f.readAll() == bytes[i], qPrintable(previous[i]));
+        }
     }
 
     void missingFolderIsAMessage() {

@@ -108,13 +108,16 @@ nlohmann::json gltfDocument(const TestMesh& m, std::vector<std::uint8_t>& buffer
     if (!m.tangents.empty())
         attributes["TANGENT"] = add(m.tangents, "VEC4", 4, 34962);
     const std::size_t indices = add(m.indices, "SCALAR", 1, 34963);
+    nlohmann::json node = {{"mesh", 0}};
+    if (m.nodeScale != glm::vec3(1.0f))
+        node["scale"] = {m.nodeScale.x, m.nodeScale.y, m.nodeScale.z};
     nlohmann::json bufferEntry = {{"byteLength", buffer.size()}};
     if (!uri.empty())
         bufferEntry["uri"] = uri;
     return {{"asset", {{"version", "2.0"}, {"generator", "parallax-studio tests"}}},
             {"scene", 0},
             {"scenes", {{{"nodes", {0}}}}},
-            {"nodes", {{{"mesh", 0}}}},
+            {"nodes", {node}},
             {"meshes",
              {{{"primitives", {{{"attributes", attributes}, {"indices", indices}, {"mode", 4}}}}}}},
             {"buffers", {bufferEntry}},

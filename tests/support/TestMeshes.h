@@ -1,8 +1,8 @@
 #pragma once
 // Meshes the mesh tests generate and write as OBJ, glTF (.gltf + .bin) and GLB, so no third-party
 // asset is needed: a torus (with or without glTF tangents), a uv-seamed sphere, a sphere with
-// mirrored uv halves, non-uniform scaling, degenerate triangles, a NaN position. uv in glTF's
-// convention (v down the image); the writers convert for OBJ (v up).
+// mirrored uv halves, non-uniform scaling (in the vertices or a glTF node's), degenerate triangles,
+// a NaN position. uv in glTF's convention (v down the image); the writers convert for OBJ (v up).
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -19,6 +19,8 @@ struct TestMesh {
     std::vector<glm::vec2> uvs2;     // a second set (glTF TEXCOORD_1), or empty
     std::vector<glm::vec4> tangents; // glTF TANGENT (xyz, handedness w), or empty
     std::vector<unsigned> indices;   // counter-clockwise from outside
+    // glTF only: the node's scale, applied by the reader (`scaled` gives what it should read).
+    glm::vec3 nodeScale{1.0f};
     // The analytic dP/du and dP/dv at each vertex (for the checks, never written).
     std::vector<glm::vec3> dPdu, dPdv;
 };

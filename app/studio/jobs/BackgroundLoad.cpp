@@ -4,11 +4,16 @@
 #include <QEventLoop>
 #include <QProgressDialog>
 #include <QTimer>
+#include <algorithm>
 
 namespace px::studio {
 
 namespace {
-constexpr int kQuietMs = 300; // a load this short shows no dialog
+int quietMs = 300; // a load this short shows no dialog
+}
+
+void setBusyDialogDelay(int ms) {
+    quietMs = std::max(0, ms);
 }
 
 bool waitForWork(QWidget* window, const QString& label, QFutureWatcherBase& watcher,
@@ -19,7 +24,7 @@ bool waitForWork(QWidget* window, const QString& label, QFutureWatcherBase& watc
         return false;
     // First a quiet moment: paint, but hold user input (nothing may edit the document the load
     // will replace).
-    QTimer::singleShot(kQuietMs, &loop, &QEventLoop::quit);
+    QTimer::singleShot(quietMs, &loop, &QEventLoop::quit);
     loop.exec(QEventLoop::ExcludeUserInputEvents);
     if (watcher.isFinished())
         return false;
@@ -34,8 +39,8 @@ bool waitForWork(QWidget* window, const QString& label, QFutureWatcherBase& watc
     QElapsedTimer clock;
     clock.start();
     auto showTime = [&] {
-        dialog.setLabelText(QObject::tr("%1 %2 s").arg(label).arg(
-            (clock.elapsed() + kQuietMs) / 1000.0, 0, 'f', 1));
+        dialog.setLabelText(
+            QObject::tr("%1 %2 s").arg(label).arg((clock.elapsed() + quietMs) / 1000.0, 0, 'f', 1));
         if (progress)
             dialog.setValue(static_cast<int>(100.0f * progress->load()));
     };

@@ -19,6 +19,10 @@ class QWidget;
 
 namespace px::studio {
 
+// How long work runs before the dialog shows (300 ms: a shorter load shows none). Tests set 0 to
+// see the dialog of any load.
+void setBusyDialogDelay(int ms);
+
 // Spins the GUI thread's events until `watcher` finishes or Cancel is pressed (returns true);
 // the dialog says `label` ("Loading bricks.png…") and the seconds so far, and fills its bar from
 // `progress` (0 to 1, written by the work) where there is one.

@@ -20,6 +20,7 @@ SurfaceErrors compareSurfaces(const Image& hits, const Image& exact, int mapWidt
     for (int y = 0; y < hits.height; ++y) {
         for (int x = 0; x < hits.width; ++x) {
             const float t = hits.at(x, y, 2), te = exact.at(x, y, 2);
+            out.steepPixels += te == kSteepSurfaceT;
             if (!(t >= 0.0f) || !(te >= 0.0f))
                 continue;
             const double du = (double(hits.at(x, y, 0)) - exact.at(x, y, 0)) * mapWidth;

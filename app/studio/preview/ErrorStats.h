@@ -1,8 +1,9 @@
 #pragma once
 // A view's error against the exact intersection, from two surface renders of the same view: each
-// pixel holds (u, v, t, fetches) of its hit, t < 0 where no surface was drawn. The error is the
-// distance between the two hits in texels of the height map (docs/conventions.md §5), over the
-// pixels where both found the surface.
+// pixel holds (u, v, t, fetches) of its hit, t = -1 where no surface was drawn and t = -2 where
+// the surface is seen more than 89 degrees from its normal (a mesh's rims: docs/meshes.md). The
+// error is the distance between the two hits in texels of the height map (docs/conventions.md
+// §5), over the pixels where both traced the surface.
 
 #include "parallax/image/Image.h"
 
@@ -20,7 +21,11 @@ struct SurfaceErrors {
     int otherSurface = 0;  // pixels whose hit is more than kWrongSurfaceTexels from the exact one
     double meanFetches = 0.0;
     int pixels = 0;
+    int steepPixels = 0; // surface seen steeper than 89 degrees: not counted above
 };
+
+// The surface output's t where the view is steeper than 89 degrees from the normal.
+inline constexpr float kSteepSurfaceT = -2.0f;
 
 SurfaceErrors compareSurfaces(const Image& hits, const Image& exact, int mapWidth, int mapHeight);
 

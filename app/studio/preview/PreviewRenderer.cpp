@@ -255,6 +255,7 @@ Result<PreviewStats> PreviewRenderer::measure(const PreviewScene& scene, QSize p
     stats.maxError = errors.maxError;
     stats.otherSurface = errors.otherSurface;
     stats.pixels = errors.pixels;
+    stats.steepPixels = errors.steepPixels;
     stats.valid = true;
     m_heatMap = scene.overlays.heatMap ? heatMapImage(errors) : QImage();
     return stats;

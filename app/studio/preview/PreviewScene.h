@@ -26,6 +26,7 @@ struct PreviewStats {
     double maxError = 0.0;
     int otherSurface = 0; // pixels on another surface than the exact one (> 2 texels off)
     int pixels = 0;       // pixels the figures are over (0: none measured yet)
+    int steepPixels = 0;  // surface seen steeper than 89 degrees, not counted (ErrorStats.h)
     bool valid = false;
 };
 

@@ -31,9 +31,11 @@ struct SharedView {
     int meshUvSet = 0;  // the file's uv set read
     int meshUvSets = 1; // how many it has
     // Image-based light (docs/lighting.md), prefiltered; null: the light's ambient fill. Its
-    // name is "sky" (the built-in one, its sun where the light was when chosen) or the file.
+    // name is "sky" (the built-in one, its sun at `skySun`, made again when the light moves:
+    // SkyFollower.h) or the file.
     std::shared_ptr<const PrefilteredEnvironment> environment;
     QString environmentName;
+    glm::vec3 skySun{0.0f};
     float exposure = 0.0f;       // stops, under an environment
     bool showEnvironment = true; // behind the mesh, under an environment
 };

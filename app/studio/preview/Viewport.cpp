@@ -188,7 +188,7 @@ void Viewport::showStats() {
     QString text = QStringLiteral("<b>%1</b>").arg(name);
     if (st.frameMs > 0)
         text += tr(" · %1 ms").arg(st.frameMs, 0, 'f', 1);
-    if (st.valid && st.pixels > 0)
+    if (st.valid && st.pixels > 0) {
         text += tr(" · %1 fetches/px<br>error vs exact: mean %2, p99 %3, max %4 texels · %5 % on "
                    "another surface")
                     .arg(st.fetchesPerPixel, 0, 'f', 1)
@@ -196,7 +196,10 @@ void Viewport::showStats() {
                     .arg(st.p99Error, 0, 'f', 3)
                     .arg(st.maxError, 0, 'f', 2)
                     .arg(100.0 * st.otherSurface / st.pixels, 0, 'f', 2);
-    else if (st.valid)
+        // A mesh's rims (docs/meshes.md): said, so the figures' pixels are known.
+        if (st.steepPixels > 0)
+            text += tr(" · %1 px steeper than 89° not counted").arg(st.steepPixels);
+    } else if (st.valid)
         text += tr("<br>no surface in view");
     else
         text += tr("<br>measuring the error…");

@@ -1,6 +1,7 @@
 #include "window/MainWindow.h"
 
 #include "jobs/Baking.h"
+#include "jobs/SkyFollower.h"
 #include "model/MaterialDocument.h"
 #include "panels/ComparePanel.h"
 #include "panels/MapsPanel.h"
@@ -93,6 +94,7 @@ MainWindow::MainWindow(const QString& liveReason, QWidget* parent)
     connect(m_viewPanel, &ViewPanel::loadEnvironmentRequested, this,
             &MainWindow::loadEnvironmentDialog);
     connect(m_viewports, &ViewportGrid::viewEdited, this, &MainWindow::rememberMaterialMesh);
+    new SkyFollower(m_viewports, this); // the sky's sun moves with the light
     updateRecentMenu();
     updateTitle();
     resize(1400, 900);

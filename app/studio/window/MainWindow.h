@@ -9,11 +9,13 @@
 // MainWindowActions.h holds the actions more than one of them reach (private to the window).
 
 #include "jobs/BakeRunner.h"
+#include "parallax/Result.h"
 #include "parallax/material/MapKind.h"
 #include "parallax/sample/ProceduralMaps.h"
 
 #include <QMainWindow>
 #include <QPointer>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,7 +26,8 @@ class QMenu;
 
 namespace px {
 struct ImportedSet;
-}
+struct LoadedMesh;
+} // namespace px
 
 namespace px::studio {
 
@@ -71,21 +74,31 @@ public:
     // with progress, drawn by the active viewport (every viewport while linked), added to the
     // recent meshes and remembered for the material in the editor's settings (not in the material
     // file: the mesh is how this editor previews it, not part of it). A failure shows a message
-    // naming the file and keeps the mesh drawn before.
-    bool loadMesh(const QString& path, int uvSet = 0);
+    // naming the file and keeps the mesh drawn before. `uvSet` < 0: the set this file was last
+    // shown with (the first if it has no such set any more).
+    static constexpr int kRememberedUvSet = -1;
+    bool loadMesh(const QString& path, int uvSet = kRememberedUvSet);
     RecentFiles* recentMeshes() const { return m_recentMeshes; }
     // Image-based light in the active viewport (all while linked): "" none, "sky" the built-in one
-    // (its sun where the light is now), else an HDR/EXR file; made in the background. A failure
-    // shows a message naming the file and keeps the environment drawn before.
+    // (its sun where the light is, following it: SkyFollower.h), else an HDR/EXR file; made in the
+    // background. A failure shows a message naming the file and keeps the environment drawn
+    // before.
     bool setEnvironment(const QString& source);
     // Pictures out (MainWindowPictures.cpp), rendered offscreen at `size` pixels per view without
     // the overlays, written atomically as PNG: the active view, or every shown view side by side
     // as the grid places them; a turntable of the active view, the camera orbiting once in
-    // `frames` steps, FILE-000.png ... written as one set (a failure keeps the previous set).
+    // `frames` steps, FILE-000.png ... written as one set, one frame per turn of the event loop
+    // under a progress dialog with Cancel (a failure or a cancel keeps the previous set).
     bool saveViewImage(const QString& file, QSize size, bool allViews);
     bool saveTurntable(const QString& file, QSize size, int frames);
-    // The mesh file remembered for a material file, or empty.
+    // The mesh file remembered for a material file, or empty, and the uv set it was shown with.
     static QString rememberedMesh(const QString& materialPath);
+    static int rememberedMeshUvSet(const QString& materialPath);
+    // Tests: called on the loading thread with each progress report of a mesh load (a test holds
+    // the load there to see the progress dialog).
+    void setMeshProgressObserver(std::function<void(float)> observer) {
+        m_meshProgressObserver = std::move(observer);
+    }
     // The last import's summary (hidden when not interactive; tests read and click it).
     ImportSummaryDialog* importSummary() const;
     // Bakes in the background; over a normal map loaded from a file it asks first.
@@ -134,6 +147,8 @@ private:
     void loadEnvironmentDialog();
     enum class PictureKind { ActiveView, AllViews, Turntable };
     void picturesDialog(PictureKind kind);
+    Result<LoadedMesh> readMesh(const QString& path, int uvSet);
+    bool loadMeshWith(const QString& path, int uvSet, bool remembered);
     void rememberMaterialMesh();
     void restoreMaterialMesh();
     void exportDialog();
@@ -158,6 +173,7 @@ private:
     QPointer<ImportSummaryDialog> m_importSummary;
     QString m_lastProblem;
     bool m_interactive = true;
+    std::function<void(float)> m_meshProgressObserver;
     bool m_layoutRestored = false; // save it on close only if it was restored
 
     struct Actions;

@@ -49,6 +49,7 @@ bool MainWindow::setEnvironment(const QString& source) {
     }
     view.environment = std::make_shared<const PrefilteredEnvironment>(std::move(*made));
     view.environmentName = sky ? source : QFileInfo(source).absoluteFilePath();
+    view.skySun = sky ? sun : glm::vec3(0.0f);
     m_viewports->editView(view);
     return true;
 }

@@ -1,5 +1,6 @@
 // MainWindow: pictures out — the active view or every view as a PNG at any size, and a turntable
-// of the active view — rendered offscreen on the views' own contexts, written atomically.
+// of the active view with progress and Cancel — rendered offscreen on the views' own contexts,
+// written atomically.
 
 #include "parallax/image/ImageSet.h"
 #include "preview/PreviewWidget.h"
@@ -7,8 +8,10 @@
 #include "preview/ViewportGrid.h"
 #include "window/MainWindow.h"
 
+#include <QCoreApplication>
 #include <QFileDialog>
 #include <QInputDialog>
+#include <QProgressDialog>
 #include <QRegularExpression>
 #include <QStatusBar>
 
@@ -63,15 +66,36 @@ bool MainWindow::saveTurntable(const QString& file, QSize size, int frames) {
     Viewport* viewport = m_viewports->viewport(m_viewports->activeViewport());
     const PreviewScene scene = viewport->preview()->scene();
     const std::vector<std::string> files = numberedFiles(file.toStdString(), frames);
+    // Frames render on the GUI thread (the view's GL context lives there), one per turn of the
+    // event loop: between frames the window repaints and Cancel is heard. The set is staged under
+    // temporary names and renamed only once complete, so a cancel leaves nothing behind.
+    QProgressDialog progress(this);
+    progress.setWindowTitle(tr("Turntable"));
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setRange(0, frames);
+    progress.setMinimumDuration(0);
+    progress.setAutoClose(false);
+    progress.setAutoReset(false);
+    progress.show();
     const Status s = writeImageSet(
         files,
-        [&](int i) {
+        [&](int i) -> Result<Image> {
+            progress.setLabelText(tr("Rendering frame %1 of %2…").arg(i + 1).arg(frames));
+            progress.setValue(i);
+            QCoreApplication::processEvents();
+            if (progress.wasCanceled())
+                return Error{"turntable cancelled", ErrorKind::Cancelled, {}};
             PreviewScene turned = scene;
             turned.view.camera.azimuthDeg +=
                 360.0f * static_cast<float>(i) / static_cast<float>(frames);
             return viewport->preview()->renderImage(turned, size);
         },
         pngOptions());
+    progress.setValue(frames);
+    if (!s && s.error().cancelled()) {
+        statusBar()->showMessage(tr("Turntable cancelled; no frames written."), 8000);
+        return false;
+    }
     if (!s) {
         showProblem(tr("Cannot save the turntable"), QString::fromStdString(s.error().message));
         return false;

@@ -11,6 +11,9 @@
 #include <cmath>
 #include <filesystem>
 #include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 #include <sstream>
 
 namespace px {
@@ -51,6 +54,23 @@ std::string text(const aiVector3D& v) {
 
 glm::vec3 vec(const aiVector3D& v) {
     return {v.x, v.y, v.z};
+}
+
+// A mesh where a node draws it: the nodes' transforms multiplied down from the root.
+struct Instance {
+    const aiMesh* mesh;
+    unsigned index;  // in the scene
+    glm::mat4 model; // file units, the scene's frame
+};
+
+void collectInstances(const aiScene& scene, const aiNode& node, const glm::mat4& parent,
+                      std::vector<Instance>& out) {
+    // aiMatrix4x4 is row-major: read as column-major it is the transpose.
+    const glm::mat4 model = parent * glm::transpose(glm::make_mat4(&node.mTransformation.a1));
+    for (unsigned i = 0; i < node.mNumMeshes; ++i)
+        out.push_back({scene.mMeshes[node.mMeshes[i]], node.mMeshes[i], model});
+    for (unsigned c = 0; c < node.mNumChildren; ++c)
+        collectInstances(scene, *node.mChildren[c], model, out);
 }
 
 // Zero area in position or in uv (relative to the edges, so independent of the mesh's units):
@@ -134,10 +154,13 @@ Result<LoadedMesh> loadMesh(const std::string& path, const MeshLoadOptions& opti
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     // The importer owns and deletes its progress handler.
     importer.SetProgressHandler(new ProgressRelay(options.progress, cancelled));
-    // Node transforms baked in, polygons cut into triangles, identical corners shared (OBJ lists
-    // every face's corners apart): MikkTSpace welds them too. Normals and frames are ours.
-    const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                           aiProcess_PreTransformVertices | aiProcess_SortByPType;
+    // Polygons cut into triangles, identical corners shared (OBJ lists every face's corners
+    // apart): MikkTSpace welds them too. Normals and frames are ours. Node transforms are applied
+    // below, not by Assimp's PreTransformVertices: it turns tangents by the normals' inverse
+    // transpose, 49 degrees off under a (1.6, 1, 0.6) scale, where a tangent, a direction along
+    // the surface, goes by the transform itself.
+    const unsigned flags =
+        aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType;
     const aiScene* scene = nullptr;
     try {
         scene = importer.ReadFile(path, flags);
@@ -154,9 +177,12 @@ Result<LoadedMesh> loadMesh(const std::string& path, const MeshLoadOptions& opti
 
     LoadedMesh out;
     out.file = path;
+    std::vector<Instance> instances;
+    if (scene->mRootNode != nullptr)
+        collectInstances(*scene, *scene->mRootNode, glm::mat4(1.0f), instances);
     std::size_t triangles = 0;
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-        const aiMesh& mesh = *scene->mMeshes[m];
+    for (const Instance& instance : instances) {
+        const aiMesh& mesh = *instance.mesh;
         out.uvSets = std::max(out.uvSets, static_cast<int>(mesh.GetNumUVChannels()));
         for (unsigned f = 0; f < mesh.mNumFaces; ++f)
             triangles += mesh.mFaces[f].mNumIndices == 3;
@@ -177,17 +203,23 @@ Result<LoadedMesh> loadMesh(const std::string& path, const MeshLoadOptions& opti
     const auto set = static_cast<unsigned>(options.uvSet);
     out.uvSet = options.uvSet;
     out.fileTangents = true;
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
-        out.fileTangents = out.fileTangents && scene->mMeshes[m]->HasTangentsAndBitangents() &&
-                           scene->mMeshes[m]->HasNormals();
+    for (const Instance& instance : instances)
+        out.fileTangents = out.fileTangents && instance.mesh->HasTangentsAndBitangents() &&
+                           instance.mesh->HasNormals();
     MeshData& data = out.mesh;
     data.vertices.reserve(triangles); // about as many vertices as triangles on a closed mesh
     data.indices.reserve(3 * triangles);
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-        const aiMesh& mesh = *scene->mMeshes[m];
+    for (const Instance& instance : instances) {
+        const aiMesh& mesh = *instance.mesh;
         const std::string name = mesh.mName.length > 0
                                      ? "mesh \"" + std::string(mesh.mName.C_Str()) + "\""
-                                     : "mesh " + std::to_string(m);
+                                     : "mesh " + std::to_string(instance.index);
+        // Positions and tangents go by the transform, normals by its inverse transpose; a
+        // mirroring transform turns the triangles over, so their corners swap to stay
+        // counter-clockwise (as glTF asks).
+        const glm::mat3 linear(instance.model);
+        const glm::mat3 normals = glm::transpose(glm::inverse(linear));
+        const bool mirrors = glm::determinant(linear) < 0.0f;
         if (!mesh.HasTextureCoords(set))
             return fileError(path, name + " has no uv set " + std::to_string(set));
         const auto base = static_cast<unsigned>(data.vertices.size());
@@ -200,19 +232,21 @@ Result<LoadedMesh> loadMesh(const std::string& path, const MeshLoadOptions& opti
             if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
                 return fileError(path, where + " has a non-finite uv");
             MeshVertex v{};
-            v.position = vec(mesh.mVertices[i]);
+            v.position = glm::vec3(instance.model * glm::vec4(vec(mesh.mVertices[i]), 1.0f));
             // Assimp hands every format's uv with v up; the project's v runs down (glTF's).
             v.uv = {uv.x, 1.0f - uv.y};
             if (mesh.HasNormals()) {
                 if (!finite(mesh.mNormals[i]))
                     return fileError(path, where + " has a non-finite normal");
-                v.normal = vec(mesh.mNormals[i]);
+                v.normal = normals * vec(mesh.mNormals[i]);
             }
             if (out.fileTangents) {
-                // glTF: bitangent = w N x T points up the image; B = dP/dv points down it.
-                const glm::vec3 n = glm::normalize(v.normal), t = vec(mesh.mTangents[i]);
+                // glTF: bitangent = w N x T points up the image; B = dP/dv points down it. w is
+                // read after the transform, which a mirror flips.
+                const glm::vec3 n = glm::normalize(v.normal), t = linear * vec(mesh.mTangents[i]);
                 const float w =
-                    glm::dot(vec(mesh.mBitangents[i]), glm::cross(n, t)) >= 0.0f ? 1.0f : -1.0f;
+                    glm::dot(linear * vec(mesh.mBitangents[i]), glm::cross(n, t)) >= 0.0f ? 1.0f
+                                                                                          : -1.0f;
                 const glm::vec3 tangent = t - n * glm::dot(n, t);
                 if (!std::isfinite(glm::length(tangent)))
                     return fileError(path, where + " has a non-finite tangent");
@@ -225,8 +259,8 @@ Result<LoadedMesh> loadMesh(const std::string& path, const MeshLoadOptions& opti
             const aiFace& face = mesh.mFaces[f];
             if (face.mNumIndices != 3)
                 continue;
-            const unsigned a = base + face.mIndices[0], b = base + face.mIndices[1],
-                           c = base + face.mIndices[2];
+            const unsigned a = base + face.mIndices[0], b = base + face.mIndices[mirrors ? 2 : 1],
+                           c = base + face.mIndices[mirrors ? 1 : 2];
             if (degenerate(data.vertices[a], data.vertices[b], data.vertices[c])) {
                 ++out.droppedTriangles;
                 continue;

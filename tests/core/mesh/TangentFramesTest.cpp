@@ -79,6 +79,8 @@ private slots:
     void framesFollowTheSurface();
     void mirroredUvSplitsVertices();
     void fileTangentsAreKept();
+    void fileTangentsFollowANodeScale_data();
+    void fileTangentsFollowANodeScale();
     void handednessIsGltfs();
     void depthScaleFollowsUvDensity();
 
@@ -259,6 +261,64 @@ void TangentFramesTest::fileTangentsAreKept() {
     // Turned 20 degrees; the generated ones differ from dP/du by up to 5.6
     // (framesFollowTheSurface).
     QVERIFY2(leastGenerated > 14.0, qPrintable(QString::number(leastGenerated)));
+}
+
+void TangentFramesTest::fileTangentsFollowANodeScale_data() {
+    QTest::addColumn<float>("x");
+    QTest::newRow("scale (1.6, 1, 0.6)") << 1.6f;
+    QTest::newRow("mirroring scale (-1.6, 1, 0.6)") << -1.6f;
+}
+
+// A glTF node scaling non-uniformly over a torus with its own tangents (turned 20 degrees from
+// dP/du): a tangent is a direction along the surface, so it goes by the scale S itself (the
+// normal by S^-1) and reads as it does with the scale baked into the vertices (TestMeshes'
+// `scaled`), lengths included; B stays on dP/dv's side. A mirroring scale turns the triangles
+// over (they still wind counter-clockwise from outside) and the handedness with them.
+void TangentFramesTest::fileTangentsFollowANodeScale() {
+    QFETCH(float, x);
+    const glm::vec3 scale(x, 1.0f, 0.6f);
+    test::TestMesh node = test::torus(32, 16, true, 20.0f);
+    node.nodeScale = scale;
+    const test::TestMesh baked = test::scaled(test::torus(32, 16, true, 20.0f), scale);
+    Result<LoadedMesh> a = loadMesh(write("node-scale.gltf", node));
+    Result<LoadedMesh> b = loadMesh(write("baked-scale.gltf", baked));
+    QVERIFY2(a.ok(), a.ok() ? "" : a.error().message.c_str());
+    QVERIFY(b.ok() && a->fileTangents && b->fileTangents);
+    QCOMPARE(a->mesh.vertices.size(), b->mesh.vertices.size());
+    double worstAngle = 0.0, worstSource = 0.0, worstLength = 0.0;
+    for (std::size_t i = 0; i < a->mesh.vertices.size(); ++i) {
+        const MeshVertex &v = a->mesh.vertices[i], &w = b->mesh.vertices[i];
+        QVERIFY(glm::length(v.position - w.position) < 1e-5f);
+        QVERIFY(angleDeg(glm::dvec3(v.normal), glm::dvec3(w.normal)) < 0.01);
+        worstAngle = std::max(worstAngle, angleDeg(glm::dvec3(v.tangent), glm::dvec3(w.tangent)));
+        worstLength = std::max(
+            {worstLength, std::abs(double(glm::length(v.tangent) / glm::length(w.tangent)) - 1.0),
+             std::abs(double(glm::length(v.bitangent) / glm::length(w.bitangent)) - 1.0)});
+        // And against S t from the file, directly; B on the side of the scaled dP/dv.
+        std::size_t k = 0;
+        while (k < baked.uvs.size() && (glm::length(baked.uvs[k] - v.uv) > 1e-5f ||
+                                        glm::length(baked.normals[k] - v.normal) > 1e-4f))
+            ++k;
+        QVERIFY(k < baked.uvs.size());
+        worstSource = std::max(
+            worstSource, angleDeg(glm::dvec3(v.tangent), glm::dvec3(glm::vec3(baked.tangents[k]))));
+        QVERIFY(glm::dot(v.bitangent, baked.dPdv[k]) > 0.0f);
+        QCOMPARE(gltfHandedness(v), x > 0.0f ? 1.0f : -1.0f);
+    }
+    const MeshData& mesh = a->mesh;
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+        const MeshVertex& p = mesh.vertices[mesh.indices[t]];
+        const MeshVertex& q = mesh.vertices[mesh.indices[t + 1]];
+        const MeshVertex& r = mesh.vertices[mesh.indices[t + 2]];
+        QVERIFY(glm::dot(glm::cross(q.position - p.position, r.position - p.position),
+                         p.normal + q.normal + r.normal) > 0.0f);
+    }
+    qInfo("node scale against baked: tangents within %.4f deg, lengths within %.2g; against S t "
+          "within %.4f deg",
+          worstAngle, worstLength, worstSource);
+    QVERIFY2(worstAngle < 0.01 && worstSource < 0.01 && worstLength < 1e-4,
+             qPrintable(
+                 QString("%1 deg, %2 deg, %3").arg(worstAngle).arg(worstSource).arg(worstLength)));
 }
 
 // glTF's w: +1 on the unmirrored torus; on the mirrored sphere, +1 on one half and -1 on the

@@ -36,7 +36,8 @@ struct DrawOptions {
     // that match the CPU to the bit.
     KernelFlavour kernels = KernelFlavour::Production;
     // Cleared to before drawing, as stored (the colour output is sRGB-encoded); alpha 0 leaves the
-    // background transparent. The Surface output always clears to -1 (t = -1: no surface).
+    // background transparent. The Surface output always clears to -1 (t = -1: no surface); a
+    // surface seen more than 89 degrees from its normal has t = -2 (surface.frag.glsl).
     glm::vec4 background{0.0f};
     bool clear = true;
     glm::vec3 baseColor{1.0f}; // multiplies the albedo map (the colour when there is none)
