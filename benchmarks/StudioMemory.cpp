@@ -89,6 +89,13 @@ bool drawEveryView(MainWindow& window, int views) {
         preview->update();
         if (!waitUntil([&] { return preview->framesRendered() > frames; }, 600000))
             return false;
+        // Big maps go up on a worker meanwhile: until then the frame shows the maps before.
+        if (!waitUntil([&] { return !preview->uploading(); }, 600000))
+            return false;
+        const int uploaded = preview->framesRendered();
+        preview->update();
+        if (!waitUntil([&] { return preview->framesRendered() > uploaded; }, 600000))
+            return false;
     }
     return true;
 }

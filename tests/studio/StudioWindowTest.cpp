@@ -3,6 +3,7 @@
 // baking a cone map enables the cone technique, undo restores, and a corrupt file changes nothing.
 
 #include "StudioTestSupport.h"
+#include "jobs/MapUpload.h"
 #include "panels/ComparePanel.h"
 #include "panels/MapRow.h"
 #include "panels/MapsPanel.h"
@@ -14,6 +15,7 @@
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/render/GpuMaterial.h"
+#include "preview/PreviewRenderer.h"
 #include "widgets/SliderField.h"
 #include "widgets/TechniqueCombo.h"
 
@@ -158,6 +160,57 @@ private slots:
         QVERIFY(waitForFrame(left, left->framesRendered()));
         QVERIFY(left->gpuMaterial());
         QCOMPARE(left->gpuMaterial()->uploadCount(), 0);
+    }
+
+    // Big maps go up on a worker, on a context sharing the views' (on the GUI thread an 8192² map
+    // froze the window for over a second): the views draw what they have meanwhile, then the new
+    // maps, and measure them. Here every upload goes to the worker.
+    void mapsUploadOnAWorker() {
+        PreviewRenderer::setBackgroundUploadTexels(0);
+        const auto restore =
+            qScopeGuard([] { PreviewRenderer::setBackgroundUploadTexels(4096u * 4096u); });
+        const int before = MapUpload::completed();
+        auto w = makeWindow(2);
+        QVERIFY(w);
+        PreviewWidget* left = w->viewports()->viewport(0)->preview();
+        PreviewWidget* right = w->viewports()->viewport(1)->preview();
+        QVERIFY(left && right);
+        QVERIFY(waitForFigures(left) && waitForFigures(right));
+        QCOMPARE(MapUpload::completed(), before + 1); // once for both views
+        QVERIFY(left->gpuMaterial() && left->gpuMaterial() == right->gpuMaterial());
+        const QImage sample = left->grabFramebuffer();
+
+        const std::string ramp = writeRamp(m_dir, "worker_height.png", 256);
+        QVERIFY(!ramp.empty());
+        QVERIFY(w->loadMap(MapKind::Height, QString::fromStdString(ramp)));
+        QVERIFY(waitForFigures(left) && waitForFigures(right));
+        QVERIFY2(left->renderError().isEmpty(), qPrintable(left->renderError()));
+        QCOMPARE(MapUpload::completed(), before + 2);
+        QVERIFY(left->gpuMaterial() == right->gpuMaterial());
+        QCOMPARE(left->gpuMaterial()->heightField().width, 256);
+        QVERIFY(left->gpuMaterial()->heightField().texels.sharesWith(
+            w->document()->state().assets->height.texels));
+        // The worker's textures are visible to the views' contexts: the ramp draws (not the
+        // background, not the sample) and is measured against its own exact hits.
+        QVERIFY(left->stats().valid && left->stats().pixels > 0);
+        QVERIFY2(changedPixels(sample, left->grabFramebuffer()) >
+                     sample.width() * sample.height() / 10,
+                 "the loaded ramp must not look like the sample");
+
+        // A view switched to `cone` after a bake: the cone texture goes up there too, alone.
+        w->startBake(BakeKind::Cone);
+        QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 60000);
+        QVERIFY(waitForFigures(left) && waitForFigures(right));
+        const int bakedUploads = MapUpload::completed();
+        w->document()->edit("cone", [](DocumentState& s) {
+            s.setView(1, {Technique::Cone, info(Technique::Cone).defaults});
+        });
+        QVERIFY(waitForFigures(right));
+        QVERIFY2(right->renderError().isEmpty(), qPrintable(right->renderError()));
+        QCOMPARE(MapUpload::completed(), bakedUploads + 1);
+        QVERIFY(right->gpuMaterial()->ready(Technique::Cone));
+        QCOMPARE(right->gpuMaterial()->uploadCount(), 1);
+        QCOMPARE(right->gpuMaterial()->bakeCount(), 0);
     }
 
     void viewportsTraceDifferentTechniques() {

@@ -43,6 +43,43 @@ GpuMaterial::create(const MaterialAssets& assets, WrapMode wrap, const GpuMateri
     return m;
 }
 
+std::size_t GpuMaterial::texelsToUpload(const MaterialAssets& assets, WrapMode wrap,
+                                        const GpuMaterial* previous,
+                                        std::span<const Technique> techniques) {
+    if (previous && previous->m_wrap != wrap)
+        previous = nullptr;
+    auto texels = [](const auto& map) { return std::size_t(map.width) * std::size_t(map.height); };
+    std::size_t n = 0;
+    const bool sameHeight = previous && same(assets.height, previous->m_field);
+    if (!sameHeight)
+        n += texels(assets.height);
+    // The derived maps the techniques read, where `previous` has no texture of the same ones.
+    for (Technique t : techniques) {
+        const TechniqueInfo& ti = info(t);
+        if (ti.needsConeMap &&
+            !(sameHeight && previous->m_cone &&
+              (assets.cone.sqrtRatio.empty() || same(assets.cone, previous->m_coneCpu))))
+            n += texels(assets.height);
+        if (ti.needsRelaxedConeMap && !(sameHeight && previous->m_relaxed &&
+                                        (assets.relaxedCone.sqrtRatio.empty() ||
+                                         same(assets.relaxedCone, previous->m_relaxedCpu))))
+            n += texels(assets.height);
+        if (ti.needsPyramid && !(sameHeight && previous->m_atlas))
+            n += texels(assets.height);
+    }
+    if (!(previous && same(assets.albedo, previous->m_albedoMap)))
+        n += assets.albedo.empty() ? 0 : texels(assets.albedo);
+    if (!(previous && same(assets.normal, previous->m_normalMap)))
+        n += assets.normal.empty() ? 0 : texels(assets.normal);
+    for (const Image* map : {&assets.ao, &assets.roughness, &assets.metallic})
+        n += map->empty() || (previous && (same(*map, previous->m_aoMap) ||
+                                           same(*map, previous->m_roughnessMap) ||
+                                           same(*map, previous->m_metallicMap)))
+                 ? 0
+                 : texels(*map);
+    return n;
+}
+
 Status GpuMaterial::uploadMaps(const MaterialAssets& assets, const GpuMaterial* previous) {
     // Takes `previous`'s texture when `reused`, else uploads with `upload`.
     auto take = [this](Texture& to, bool reused, const Texture& from,

@@ -1,5 +1,6 @@
 #include "preview/PreviewRenderer.h"
 
+#include "jobs/MapUpload.h"
 #include "parallax/render/GpuEnvironment.h" // parallax-render
 #include "parallax/render/Renderer.h"       // parallax-render
 #include "preview/ErrorStats.h"
@@ -8,6 +9,7 @@
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLFunctions>
 #include <QRect>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <vector>
@@ -57,12 +59,24 @@ std::vector<std::weak_ptr<Upload>>& liveUploads() {
     return uploads;
 }
 
+// The uploads running on a worker for some view (one per map set: a second view waits on it).
+std::vector<std::weak_ptr<MapUpload>>& runningUploads() {
+    static std::vector<std::weak_ptr<MapUpload>> uploads;
+    std::erase_if(uploads, [](const std::weak_ptr<MapUpload>& u) { return u.expired(); });
+    return uploads;
+}
+
+// Uploads of more texels than this go up on a worker (jobs/MapUpload.h): 4096², about 0.3 s on
+// the GUI thread with llvmpipe.
+std::size_t g_backgroundTexels = std::size_t(4096) * 4096;
+
 } // namespace
 
 struct PreviewRenderer::Impl {
     std::unique_ptr<Renderer> renderer;
     std::shared_ptr<Upload> upload;            // the maps this view draws with
     GpuMaterial* gpu = nullptr;                // upload's
+    std::shared_ptr<MapUpload> pending;        // the scene's maps going up on a worker meanwhile
     std::optional<VariantKey> lastKey;         // the variant of the last frame (uniformValue)
     std::optional<RenderTarget> surfaceTarget; // float (u, v, t, fetches), the view's size
     std::shared_ptr<const PrefilteredEnvironment> uploadedEnvironment; // what gpuEnvironment holds
@@ -87,28 +101,100 @@ struct PreviewRenderer::Impl {
     // (after a bake only the new map goes up; after an undo, none).
     Status sync(const PreviewScene& scene) {
         const WrapMode wrap = scene.material.wrap;
-        if (upload && upload->assets == scene.assets && upload->wrap == wrap)
+        const std::vector<Technique> wanted = techniques(scene);
+        auto fits = [&](const std::shared_ptr<Upload>& u) {
+            return u && u->assets == scene.assets && u->wrap == wrap;
+        };
+        auto ready = [&](const std::shared_ptr<Upload>& u) {
+            return std::all_of(wanted.begin(), wanted.end(),
+                               [&](Technique t) { return u->gpu->ready(t); });
+        };
+        if (fits(upload) && ready(upload)) {
+            pending.reset();
             return success();
+        }
         std::vector<std::weak_ptr<Upload>>& uploads = liveUploads();
         std::shared_ptr<Upload> previous = upload;
         for (const std::weak_ptr<Upload>& weak : uploads) {
             std::shared_ptr<Upload> other = weak.lock();
-            if (other && other->assets == scene.assets && other->wrap == wrap) {
-                upload = other;
-                gpu = upload->gpu.get();
+            if (fits(other) && ready(other)) {
+                adopt(other);
                 return success();
             }
-            if (other && !previous)
-                previous = other;
+            if (other && (!previous || (fits(other) && !fits(previous))))
+                previous = other; // the textures to take over: the same maps' if any
         }
-        Result<std::unique_ptr<GpuMaterial>> created =
-            GpuMaterial::create(*scene.assets, wrap, previous ? previous->gpu.get() : nullptr);
-        if (!created)
-            return created.error();
-        upload = std::make_shared<Upload>(Upload{scene.assets, wrap, std::move(*created)});
-        gpu = upload->gpu.get();
+        const std::shared_ptr<Upload> fitting = fits(previous) ? previous : nullptr;
+        const GpuMaterial* reuse = previous ? previous->gpu.get() : nullptr;
+        if (pending && (pending->assets() != scene.assets || pending->wrap() != wrap))
+            pending.reset(); // maps no longer wanted
+        if (!pending &&
+            GpuMaterial::texelsToUpload(*scene.assets, wrap, reuse, wanted) > g_backgroundTexels)
+            pending = runningUpload(scene.assets, wrap, reuse, wanted);
+        if (pending && !pending->finished())
+            return success(); // drawing what there is meanwhile
+        std::shared_ptr<GpuMaterial> made;
+        if (pending) {
+            Result<std::shared_ptr<GpuMaterial>> result = pending->result();
+            if (result)
+                made = std::move(*result);
+            pending.reset();
+        }
+        if (!made && fitting) { // small: Renderer::draw prepares what the technique reads
+            adopt(fitting);
+            return success();
+        }
+        if (!made) { // small, or no context could share the views': here
+            Result<std::unique_ptr<GpuMaterial>> created =
+                GpuMaterial::create(*scene.assets, wrap, reuse);
+            if (!created)
+                return created.error();
+            made = std::move(*created);
+        }
+        adopt(std::make_shared<Upload>(Upload{scene.assets, wrap, std::move(made)}));
         uploads.push_back(upload);
         return success();
+    }
+
+    // The techniques a frame of `scene` draws.
+    static std::vector<Technique> techniques(const PreviewScene& scene) {
+        std::vector<Technique> t{scene.material.technique};
+        if (scene.overlays.wipe)
+            t.push_back(scene.overlays.wipeTechnique);
+        return t;
+    }
+
+    void adopt(std::shared_ptr<Upload> other) {
+        upload = std::move(other);
+        gpu = upload->gpu.get();
+        pending.reset();
+    }
+
+    // The worker upload of `assets`, another view's if one is running.
+    static std::shared_ptr<MapUpload>
+    runningUpload(const std::shared_ptr<const MaterialAssets>& assets, WrapMode wrap,
+                  const GpuMaterial* reuse, const std::vector<Technique>& wanted) {
+        std::vector<std::weak_ptr<MapUpload>>& running = runningUploads();
+        for (const std::weak_ptr<MapUpload>& weak : running) {
+            std::shared_ptr<MapUpload> other = weak.lock();
+            // Another view's, whatever its techniques: a derived map it does not prepare goes up
+            // next, taking the rest over.
+            if (other && other->assets() == assets && other->wrap() == wrap)
+                return other;
+        }
+        auto started = std::make_shared<MapUpload>(assets, wrap, reuse, wanted);
+        running.push_back(started);
+        return started;
+    }
+
+    // Whether the maps drawn are not the scene's yet (a worker is uploading them).
+    bool uploading() const { return pending != nullptr; }
+
+    // Whether the maps there are can stand in for the scene's while they upload: never made to
+    // bake or change their wrap (other views draw them too).
+    bool canDrawMeanwhile(const PreviewScene& scene) const {
+        return gpu && upload->wrap == scene.material.wrap &&
+               std::ranges::all_of(techniques(scene), [&](Technique t) { return gpu->ready(t); });
     }
 
     // The surface output (u, v, t, fetches) of `material` inside `boxes` of the view; the rest
@@ -180,6 +266,12 @@ Result<double> PreviewRenderer::draw(const PreviewScene& scene, QSize pixels, un
         return s.error();
     if (Status s = d.syncEnvironment(scene); !s)
         return s.error();
+    if (d.uploading() && !d.canDrawMeanwhile(scene)) {
+        f->glViewport(0, 0, size.x, size.y);
+        f->glClearColor(kBackground.r, kBackground.g, kBackground.b, 1.0f);
+        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        return 0.0;
+    }
     const DrawOptions options = d.options(scene);
     if (Status s = d.renderer->draw(*d.gpu, scene.material, scene.view.camera, scene.view.light,
                                     options, size);
@@ -219,6 +311,8 @@ Result<PreviewStats> PreviewRenderer::measure(const PreviewScene& scene, QSize p
     }
     if (Status s = d.sync(scene); !s)
         return s.error();
+    if (d.uploading())
+        return stats; // not valid: measured once the scene's maps are up
     // The view's own size: marching techniques read the height level each pixel's footprint
     // asks for, so a smaller render would measure another picture.
     const glm::ivec2 size(std::max(1, pixels.width()), std::max(1, pixels.height()));
@@ -259,6 +353,19 @@ Result<PreviewStats> PreviewRenderer::measure(const PreviewScene& scene, QSize p
     stats.valid = true;
     m_heatMap = scene.overlays.heatMap ? heatMapImage(errors) : QImage();
     return stats;
+}
+
+bool PreviewRenderer::uploading() const {
+    return m_impl->uploading();
+}
+
+void PreviewRenderer::waitForMaps() {
+    if (m_impl->pending)
+        m_impl->pending->wait();
+}
+
+void PreviewRenderer::setBackgroundUploadTexels(std::size_t texels) {
+    g_backgroundTexels = texels;
 }
 
 const GpuMaterial* PreviewRenderer::gpuMaterial() const {

@@ -9,6 +9,7 @@
 
 #include <QImage>
 #include <QSize>
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,6 +36,13 @@ public:
     std::optional<float> uniformValue(const std::string& name);
     // The maps this view last drew with (views showing the same maps share one), for tests.
     const GpuMaterial* gpuMaterial() const;
+
+    // Big maps go up on a worker (jobs/MapUpload.h): meanwhile draw() shows the maps there are
+    // (or the background, where they cannot stand in) and measure() measures nothing.
+    bool uploading() const;
+    void waitForMaps(); // blocks until the worker is done (then draw again)
+    // Uploads of more texels than this go to the worker (4096² by default; tests lower it).
+    static void setBackgroundUploadTexels(std::size_t texels);
 
 private:
     PreviewRenderer() = default;

@@ -64,7 +64,7 @@ void PreviewWidget::measure() {
     Result<PreviewStats> stats =
         m_renderer->measure(m_scene, size() * devicePixelRatioF(), m_stats.frameMs);
     doneCurrent();
-    m_measured = true;
+    m_measured = !m_renderer->uploading(); // else again once the maps are up
     if (stats)
         m_stats = *stats;
     else
@@ -86,6 +86,10 @@ const GpuMaterial* PreviewWidget::gpuMaterial() const {
     return m_renderer ? m_renderer->gpuMaterial() : nullptr;
 }
 
+bool PreviewWidget::uploading() const {
+    return m_renderer && m_renderer->uploading();
+}
+
 Result<Image> PreviewWidget::renderImage(const PreviewScene& scene, QSize pixels) {
     if (!m_renderer)
         return Error{"there is no live preview to render with"};
@@ -95,6 +99,10 @@ Result<Image> PreviewWidget::renderImage(const PreviewScene& scene, QSize pixels
     Result<Image> image = target ? Result<Image>(Image()) : Result<Image>(target.error());
     if (target) {
         Result<double> drawn = m_renderer->draw(scene, pixels, target->framebuffer());
+        if (drawn && m_renderer->uploading()) { // a picture of the scene's own maps
+            m_renderer->waitForMaps();
+            drawn = m_renderer->draw(scene, pixels, target->framebuffer());
+        }
         image = drawn ? Result<Image>(target->read()) : Result<Image>(drawn.error());
     }
     doneCurrent();
@@ -131,8 +139,13 @@ void PreviewWidget::paintGL() {
             m_stats.frameMs = *frameMs;
             ++m_frames;
         }
-        if (!m_measured && !m_measureTimer->isActive())
+        if (m_renderer->uploading()) {
+            // Drawn with the maps there were: again until the scene's are up, then measured.
+            m_measured = false;
+            QTimer::singleShot(50, this, qOverload<>(&PreviewWidget::update));
+        } else if (!m_measured && !m_measureTimer->isActive()) {
             m_measureTimer->start();
+        }
     }
     painter.endNativePainting();
 

@@ -38,6 +38,8 @@ public:
     std::optional<float> uniformValue(const QString& name);
     // The maps the last frame drew with; views showing the same maps share them (tests).
     const GpuMaterial* gpuMaterial() const;
+    // Whether the scene's maps are still going up on a worker (the view draws what it has).
+    bool uploading() const;
 
     // `scene` drawn offscreen at `pixels` on this view's context, without the overlays (heat map,
     // messages): a picture to save. Fails without a live preview or over the GL's limits.

@@ -14,6 +14,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace px {
@@ -29,6 +30,11 @@ public:
     // used in the same GL share group, and setWrap() on one changes the other's sampling.
     static Result<std::unique_ptr<GpuMaterial>> create(const MaterialAssets& assets, WrapMode wrap,
                                                        const GpuMaterial* previous = nullptr);
+    // The texels create() and then prepare() for `techniques` would upload (not take over from
+    // `previous`): an editor uploads big ones on a worker.
+    static std::size_t texelsToUpload(const MaterialAssets& assets, WrapMode wrap,
+                                      const GpuMaterial* previous,
+                                      std::span<const Technique> techniques = {});
 
     // Makes sure the maps `technique` reads are on the GPU: bakes (synchronously) and uploads the
     // cone map, the relaxed cone map or the pyramid if needed. Cheap when they are there.
