@@ -44,10 +44,6 @@ float pxConeExitFrom(vec2 d, float h, float c, vec2 P, float z) {
     return s >= 0.0f ? s : z - h; // inside all the way down to the apex's height
 }
 
-float pxConeExit(vec2 apex, float h, float c, vec2 uv, vec2 P, float z) {
-    return pxConeExitFrom(uv - apex, h, c, P, z);
-}
-
 float pxTraceCone(vec2 uv0, vec2 P) {
     vec2 X0 = pxCellCoords(uv0);
     vec2 dXY = pxCellsPerT(P);
@@ -56,16 +52,20 @@ float pxTraceCone(vec2 uv0, vec2 P) {
         ivec2 cell = pxCellAt(X0, dXY, t);
         float tCell = min(min(pxBorderT(cell.x, X0.x, dXY.x), pxBorderT(cell.y, X0.y, dXY.y)), 1.0f);
         PxConeCorners k = pxConeCorners(cell);
-        vec2 uv = uv0 + P * t;
+        // The ray's offset from the cell's first corner, in texels, from the cell-relative
+        // position (pxCellOffset): uv0 + P t is hundreds of uv out on a long ray, where a float's
+        // last bit is a thousandth of a texel, enough to step just past a wall's face.
+        vec2 a = vec2(pxCellOffset(cell.x, X0.x, dXY.x, pxCellsPerTLow.x, t),
+                      pxCellOffset(cell.y, X0.y, dXY.y, pxCellsPerTLow.y, t));
         float step = 0.0f;
         for (int j = 0; j < 4; ++j) {
             ivec2 texel = ivec2(cell.x + (j & 1), cell.y + (j >> 1));
             // With clamp, texels past the edge repeat the edge's data at another place: no cone.
             bool inside = texel.x >= 0 && texel.y >= 0 && texel.x < pxMapSize.x && texel.y < pxMapSize.y;
             if (pxWrapRepeat || inside) {
-                vec2 apex = vec2((float(texel.x) + 0.5f) / float(pxMapSize.x),
-                                 (float(texel.y) + 0.5f) / float(pxMapSize.y));
-                step = max(step, pxConeExit(apex, k.h[j], k.c[j], uv, P, 1.0f - t));
+                vec2 d = vec2((a.x - float(j & 1)) / float(pxMapSize.x),
+                              (a.y - float(j >> 1)) / float(pxMapSize.y));
+                step = max(step, pxConeExitFrom(d, k.h[j], k.c[j], P, 1.0f - t));
             }
         }
         if (t + step < tCell) {

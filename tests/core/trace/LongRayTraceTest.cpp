@@ -1,7 +1,8 @@
 // Float32 `exact`, `pyramid`, `cone` and `relaxed-cone` on the longest rays the tracers accept
 // (height scale 100, polar 89° and 89.99°: |P| at or near its bound of 10^4 uv, up to a million
 // cells) against the float64 walk of tests/support/DoubleWalk.h, on noise and the adversarial
-// maps, seeds 1 to 3 and one that changes on every run (printed; PX_TEST_SEED=N repeats it). Every
+// maps, seeds 1, 2, 76347 and one that changes on every run (printed; PX_TEST_SEED=N repeats it;
+// 76347 is one a run found: `cone` stepped a thousandth of a texel past a wall's face). Every
 // ray within 0.05 texel of the float64 hit (relaxed-cone: 2 texels, its documented bound), or,
 // where the ray grazes the surface, the float64 hit of the surface raised or lowered by 2^-22 (a
 // few float32 ulps of a height): nothing else is allowed.
@@ -67,7 +68,7 @@ void LongRayTraceTest::initTestCase() {
     const char* given = std::getenv("PX_TEST_SEED");
     m_seed = given ? static_cast<unsigned>(std::strtoul(given, nullptr, 10))
                    : 4u + std::random_device{}() % 100000u;
-    qInfo("map seeds 1, 2, 3 and %u (PX_TEST_SEED=%u repeats it)", m_seed, m_seed);
+    qInfo("map seeds 1, 2, 76347 and %u (PX_TEST_SEED=%u repeats it)", m_seed, m_seed);
 }
 
 void LongRayTraceTest::exactMatchesADoubleWalk_data() {
@@ -90,7 +91,7 @@ void LongRayTraceTest::exactMatchesADoubleWalk() {
     int rays = 0, grazing = 0;
     for (const Class& c : kClasses) {
         const char* name = proceduralMapNames()[static_cast<std::size_t>(c.map)].data();
-        for (unsigned seed : {1u, 2u, 3u, m_seed}) {
+        for (unsigned seed : {1u, 2u, 76347u, m_seed}) {
             const HeightField field = makeProceduralMap(c.map, c.width, c.height, seed);
             for (WrapMode wrap : {WrapMode::Repeat, WrapMode::Clamp}) {
                 auto tracer = test::makeTracer(field, wrap, technique, scale);
