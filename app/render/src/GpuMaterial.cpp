@@ -43,48 +43,51 @@ GpuMaterial::create(const MaterialAssets& assets, WrapMode wrap, const GpuMateri
     return m;
 }
 
+GpuMaterial::Kept GpuMaterial::kept(const MaterialAssets& assets, const GpuMaterial* previous) {
+    Kept k;
+    if (!previous)
+        return k;
+    const GpuMaterial& p = *previous;
+    k.height = same(assets.height, p.m_field);
+    k.albedo = same(assets.albedo, p.m_albedoMap);
+    k.normal = same(assets.normal, p.m_normalMap);
+    k.orm = same(assets.ao, p.m_aoMap) && same(assets.roughness, p.m_roughnessMap) &&
+            same(assets.metallic, p.m_metallicMap);
+    k.cone = k.height && same(assets.cone, p.m_coneCpu);
+    k.relaxedCone = k.height && same(assets.relaxedCone, p.m_relaxedCpu);
+    k.pyramid = k.height && p.m_pyramidCpu;
+    return k;
+}
+
 std::size_t GpuMaterial::texelsToUpload(const MaterialAssets& assets, WrapMode wrap,
                                         const GpuMaterial* previous,
                                         std::span<const Technique> techniques) {
     if (previous && previous->m_wrap != wrap)
         previous = nullptr;
+    const Kept k = kept(assets, previous);
     auto texels = [](const auto& map) { return std::size_t(map.width) * std::size_t(map.height); };
     std::size_t n = 0;
-    const bool sameHeight = previous && same(assets.height, previous->m_field);
-    if (!sameHeight)
-        n += texels(assets.height);
+    n += k.height ? 0 : texels(assets.height);
+    n += k.albedo || assets.albedo.empty() ? 0 : texels(assets.albedo);
+    n += k.normal || assets.normal.empty() ? 0 : texels(assets.normal);
+    if (!k.orm) // packed at the size of the largest of the three
+        n += std::max({texels(assets.ao), texels(assets.roughness), texels(assets.metallic)});
     // The derived maps the techniques read, where `previous` has no texture of the same ones.
     for (Technique t : techniques) {
         const TechniqueInfo& ti = info(t);
-        if (ti.needsConeMap &&
-            !(sameHeight && previous->m_cone &&
-              (assets.cone.sqrtRatio.empty() || same(assets.cone, previous->m_coneCpu))))
-            n += texels(assets.height);
-        if (ti.needsRelaxedConeMap && !(sameHeight && previous->m_relaxed &&
-                                        (assets.relaxedCone.sqrtRatio.empty() ||
-                                         same(assets.relaxedCone, previous->m_relaxedCpu))))
-            n += texels(assets.height);
-        if (ti.needsPyramid && !(sameHeight && previous->m_atlas))
+        if ((ti.needsConeMap && !(k.cone && previous->m_cone)) ||
+            (ti.needsRelaxedConeMap && !(k.relaxedCone && previous->m_relaxed)) ||
+            (ti.needsPyramid && !(k.pyramid && previous->m_atlas)))
             n += texels(assets.height);
     }
-    if (!(previous && same(assets.albedo, previous->m_albedoMap)))
-        n += assets.albedo.empty() ? 0 : texels(assets.albedo);
-    if (!(previous && same(assets.normal, previous->m_normalMap)))
-        n += assets.normal.empty() ? 0 : texels(assets.normal);
-    for (const Image* map : {&assets.ao, &assets.roughness, &assets.metallic})
-        n += map->empty() || (previous && (same(*map, previous->m_aoMap) ||
-                                           same(*map, previous->m_roughnessMap) ||
-                                           same(*map, previous->m_metallicMap)))
-                 ? 0
-                 : texels(*map);
     return n;
 }
 
 Status GpuMaterial::uploadMaps(const MaterialAssets& assets, const GpuMaterial* previous) {
-    // Takes `previous`'s texture when `reused`, else uploads with `upload`.
-    auto take = [this](Texture& to, bool reused, const Texture& from,
-                       const auto& upload) -> Status {
-        if (reused && from) {
+    const Kept k = kept(assets, previous);
+    // Takes `from` (previous's texture of the same map) if there is one, else uploads.
+    auto take = [this](Texture& to, const Texture& from, const auto& upload) -> Status {
+        if (from) {
             to = from;
             return success();
         }
@@ -95,45 +98,41 @@ Status GpuMaterial::uploadMaps(const MaterialAssets& assets, const GpuMaterial* 
         ++m_uploads;
         return success();
     };
-    const bool sameHeight = previous && same(assets.height, previous->m_field);
+    const Texture none;
     if (!assets.height.empty()) {
         m_field = assets.height;
-        m_heightMax = sameHeight ? previous->m_heightMax : assets.height.maxHeight();
-        m_height16 = sameHeight ? previous->m_height16 : gl::fitsR16(assets.height);
-        if (Status s = take(m_height, sameHeight, sameHeight ? previous->m_height : nullptr,
-                            [&] {
-                                return gl::uploadHeight(assets.height,
-                                                        m_height16 ? gl::HeightFormat::R16
-                                                                   : gl::HeightFormat::R32F);
-                            });
+        m_heightMax = k.height ? previous->m_heightMax : assets.height.maxHeight();
+        m_height16 = k.height ? previous->m_height16 : gl::fitsR16(assets.height);
+        const gl::HeightFormat format = m_height16 ? gl::HeightFormat::R16 : gl::HeightFormat::R32F;
+        if (Status s = take(m_height, k.height ? previous->m_height : none,
+                            [&] { return gl::uploadHeight(assets.height, format); });
             !s)
             return s;
     }
-    if (!assets.albedo.empty()) {
-        m_albedoMap = assets.albedo;
-        const bool reused = previous && same(assets.albedo, previous->m_albedoMap);
-        if (Status s = take(m_albedo, reused, reused ? previous->m_albedo : nullptr,
-                            [&] { return gl::uploadAlbedo(assets.albedo); });
-            !s)
-            return s;
-    }
-    if (!assets.normal.empty()) {
-        m_normalMap = assets.normal;
-        const bool reused = previous && same(assets.normal, previous->m_normalMap);
-        if (Status s = take(m_normal, reused, reused ? previous->m_normal : nullptr,
-                            [&] { return gl::uploadNormalMap(assets.normal); });
-            !s)
-            return s;
-    }
+    // A colour map: kept (for the next material to compare) and on the GPU.
+    auto image = [&](Texture& to, Image& source, const Image& map, bool same, const Texture& from,
+                     const auto& upload) -> Status {
+        if (map.empty())
+            return success();
+        source = map;
+        return take(to, same ? from : none, upload);
+    };
+    if (Status s = image(m_albedo, m_albedoMap, assets.albedo, k.albedo,
+                         previous ? previous->m_albedo : none,
+                         [&] { return gl::uploadAlbedo(assets.albedo); });
+        !s)
+        return s;
+    if (Status s = image(m_normal, m_normalMap, assets.normal, k.normal,
+                         previous ? previous->m_normal : none,
+                         [&] { return gl::uploadNormalMap(assets.normal); });
+        !s)
+        return s;
     if (!assets.ao.empty() || !assets.roughness.empty() || !assets.metallic.empty()) {
         m_aoMap = assets.ao;
         m_roughnessMap = assets.roughness;
         m_metallicMap = assets.metallic;
-        const bool reused = previous && same(assets.ao, previous->m_aoMap) &&
-                            same(assets.roughness, previous->m_roughnessMap) &&
-                            same(assets.metallic, previous->m_metallicMap);
         auto present = [](const Image& i) { return i.empty() ? nullptr : &i; };
-        if (Status s = take(m_orm, reused, reused ? previous->m_orm : nullptr,
+        if (Status s = take(m_orm, k.orm ? previous->m_orm : none,
                             [&] {
                                 return gl::uploadOrm(present(assets.ao), present(assets.roughness),
                                                      present(assets.metallic));
@@ -145,15 +144,15 @@ Status GpuMaterial::uploadMaps(const MaterialAssets& assets, const GpuMaterial* 
     // height come along, so a bake adds one texture and an undo none.
     if (!assets.cone.sqrtRatio.empty()) {
         m_coneCpu = assets.cone;
-        if (sameHeight && same(assets.cone, previous->m_coneCpu))
+        if (k.cone)
             m_cone = previous->m_cone;
     }
     if (!assets.relaxedCone.sqrtRatio.empty()) {
         m_relaxedCpu = assets.relaxedCone;
-        if (sameHeight && same(assets.relaxedCone, previous->m_relaxedCpu))
+        if (k.relaxedCone)
             m_relaxed = previous->m_relaxed;
     }
-    if (sameHeight && previous->m_pyramidCpu) {
+    if (k.pyramid) {
         m_pyramidCpu = previous->m_pyramidCpu;
         m_atlas = previous->m_atlas;
         m_atlasRows = previous->m_atlasRows;

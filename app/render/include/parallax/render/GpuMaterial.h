@@ -30,6 +30,8 @@ public:
     // used in the same GL share group, and setWrap() on one changes the other's sampling.
     static Result<std::unique_ptr<GpuMaterial>> create(const MaterialAssets& assets, WrapMode wrap,
                                                        const GpuMaterial* previous = nullptr);
+    // A copy shares the textures and CPU maps (an editor hands a snapshot to a worker as
+    // `previous`); it costs pointers.
     // The texels create() and then prepare() for `techniques` would upload (not take over from
     // `previous`): an editor uploads big ones on a worker.
     static std::size_t texelsToUpload(const MaterialAssets& assets, WrapMode wrap,
@@ -65,7 +67,13 @@ public:
 
 private:
     using Texture = std::shared_ptr<const gl::Object>;
+    // Which maps of `assets` are the very ones `previous` holds (see create()).
+    struct Kept {
+        bool height = false, albedo = false, normal = false, orm = false;
+        bool cone = false, relaxedCone = false, pyramid = false;
+    };
     GpuMaterial() = default;
+    static Kept kept(const MaterialAssets& assets, const GpuMaterial* previous);
     Status uploadMaps(const MaterialAssets& assets, const GpuMaterial* previous);
 
     WrapMode m_wrap = WrapMode::Repeat;
