@@ -60,7 +60,7 @@ Result<Object> makeTexture(int width, int height, GLenum internalFormat, GLenum 
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     // Storage for every level at once: glGenerateMipmap after glTexImage2D makes the driver
     // reallocate the texture with its levels and copy level 0 over (llvmpipe, 8192² height map:
-    // the peak 260 MB higher).
+    // a peak 256 MiB higher, measured).
     int levels = 1;
     while (mipmaps && std::max(width, height) >> levels > 0)
         ++levels;
