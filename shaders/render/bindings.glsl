@@ -22,7 +22,8 @@ float pxHeightTexel(ivec2 texel) {
     return texelFetch(pxHeightMap, texel, pxHeightLevel).r;
 }
 
-// Cone maps are RG32F: R the height, G sqrt(cone ratio) (docs/conventions.md §4).
+// Cone maps are RG32F, or RG16 where heights and cones are 16-bit: R the height, G sqrt(cone
+// ratio) (docs/conventions.md §4).
 vec2 pxConeTexel(ivec2 texel) {
     return texelFetch(pxConeMap, texel, 0).rg;
 }

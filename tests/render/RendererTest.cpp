@@ -7,6 +7,9 @@
 #include "RenderTestSupport.h"
 #include "TestMeshes.h"
 #include "parallax/bake/ConeMapBaker.h"
+#include "parallax/bake/ConeMapReference.h"
+#include "parallax/heightfield/HeightFieldLoader.h"
+#include "parallax/image/ImageFile.h"
 #include "parallax/mesh/MeshLoader.h"
 #include "parallax/render/TextureUpload.h"
 #include "parallax/sample/ProceduralMaps.h"
@@ -90,7 +93,7 @@ private slots:
     void derivativeFrameMatchesVertexFrame();
     void clampDiscardsRaysLeavingTheTile();
     void bakesOnlyWhatTheTechniqueReads();
-    void heightsUploadAsR16OrR32F();
+    void mapsUploadAs16BitWhereTheyFit();
     void bigMapsUploadInBandsExactly();
     void aNewMaterialKeepsTheTexturesOfUnchangedMaps();
     void uniformChangesDoNotRecompile();
@@ -452,7 +455,7 @@ void RendererTest::bakesOnlyWhatTheTechniqueReads() {
     QCOMPARE((*given)->bakeCount(), 0);
 }
 
-void RendererTest::heightsUploadAsR16OrR32F() {
+void RendererTest::mapsUploadAs16BitWhereTheyFit() {
     HeightField sixteen(8, 4);
     for (std::size_t i = 0; i < sixteen.texels.size(); ++i)
         sixteen.texels[i] = static_cast<float>(i * 2011 % 65536) / 65535.0f;
@@ -460,11 +463,48 @@ void RendererTest::heightsUploadAsR16OrR32F() {
     floats.texels[5] = 0.1234567f;
     QVERIFY(gl::fitsR16(sixteen));
     QVERIFY(!gl::fitsR16(floats));
+    // Every 16-bit level fits, read as k / 65535 or as k * (1 / 65535), and so does a 16-bit PNG
+    // read back (a test of 10^-3 of a step in float rejected most levels above 8192).
+    HeightField levels(256, 256);
+    for (std::size_t k = 0; k < levels.texels.size(); ++k)
+        levels.texels[k] = static_cast<float>(k) / 65535.0f;
+    QVERIFY(gl::fitsR16(levels));
+    for (std::size_t k = 0; k < levels.texels.size(); ++k)
+        levels.texels[k] = static_cast<float>(k) * (1.0f / 65535.0f);
+    QVERIFY(gl::fitsR16(levels));
+    QTemporaryDir dir;
+    const std::string png = dir.filePath("levels.png").toStdString();
+    QVERIFY(writeImage(png, levels.toImage(), {PixelFormat::UInt16, false}).ok());
+    Result<HeightField> read = loadHeightField(png);
+    QVERIFY(read.ok());
+    QVERIFY(gl::fitsR16(*read));
+    levels.texels[40000] += 0.3f / 65535.0f;
+    QVERIFY(!gl::fitsR16(levels));
     MaterialAssets assets;
     assets.height = sixteen;
     QVERIFY((*GpuMaterial::create(assets, WrapMode::Repeat))->heightIs16Bit());
     assets.height = floats;
     QVERIFY(!(*GpuMaterial::create(assets, WrapMode::Repeat))->heightIs16Bit());
+    // Cone maps: RG16 when the heights fit R16 and the cones are on the 16-bit grid (its own
+    // bakes round down to it); a cone map given in floats, or float heights, keep RG32F.
+    for (const bool sixteenBitHeight : {true, false}) {
+        for (const bool givenFloatCones : {false, true}) {
+            MaterialAssets a;
+            a.height = sixteenBitHeight ? sixteen : floats;
+            if (givenFloatCones) {
+                a.cone = ConeMap(ConeKind::Conservative, a.height.width, a.height.height);
+                a.cone.sqrtRatio[3] = 0.1234567f;
+                QVERIFY(!gl::fitsRG16(a.cone));
+            }
+            Result<std::unique_ptr<GpuMaterial>> m = GpuMaterial::create(a, WrapMode::Repeat);
+            QVERIFY(m.ok());
+            QVERIFY((*m)->prepare(Technique::Cone).ok());
+            QVERIFY((*m)->prepare(Technique::RelaxedCone).ok());
+            const bool rg16 = sixteenBitHeight && !givenFloatCones;
+            QCOMPARE((*m)->coneMapIs16Bit(ConeKind::Conservative), rg16);
+            QCOMPARE((*m)->coneMapIs16Bit(ConeKind::Relaxed), sixteenBitHeight);
+        }
+    }
     // What the GPU holds: every 16-bit level exactly, floats verbatim.
     for (const HeightField* f : {&sixteen, &floats}) {
         const bool r16 = gl::fitsR16(*f);
@@ -540,9 +580,13 @@ void RendererTest::bigMapsUploadInBandsExactly() {
     };
     Result<gl::Object> r16 = gl::uploadHeight(field, gl::HeightFormat::R16);
     Result<gl::Object> r32 = gl::uploadHeight(floats, gl::HeightFormat::R32F);
-    Result<gl::Object> cone = gl::uploadConeMap(field, cones);
+    ConeMap cones16 = cones;
+    quantiseDown(cones16, 65535);
+    QVERIFY(!gl::fitsRG16(cones) && gl::fitsRG16(cones16));
+    Result<gl::Object> cone = gl::uploadConeMap(field, cones, gl::ConeFormat::RG32F);
+    Result<gl::Object> cone16 = gl::uploadConeMap(field, cones16, gl::ConeFormat::RG16);
     Result<gl::Object> colour = gl::uploadAlbedo(albedo);
-    QVERIFY(r16.ok() && r32.ok() && cone.ok() && colour.ok());
+    QVERIFY(r16.ok() && r32.ok() && cone.ok() && cone16.ok() && colour.ok());
     QString bad = mismatch(
         readBack(*r16, w, h, 1), 1, 0, [&](std::size_t i) { return field.texels[i]; },
         0.5f / 65535.0f);
@@ -557,6 +601,15 @@ void RendererTest::bigMapsUploadInBandsExactly() {
     bad = mismatch(
         rg, 2, 1, [&](std::size_t i) { return cones.sqrtRatio[i]; }, 0.0f);
     QVERIFY2(bad.isEmpty(), qPrintable("cone map G: " + bad));
+    // RG16 (three bands): the cones as rounded, to a float's last bit below 1 (llvmpipe's unorm
+    // read is k times 1 / 65535, not k / 65535, for some k).
+    const std::vector<float> rg16 = readBack(*cone16, w, h, 2);
+    bad = mismatch(
+        rg16, 2, 0, [&](std::size_t i) { return field.texels[i]; }, 0.5f / 65535.0f);
+    QVERIFY2(bad.isEmpty(), qPrintable("RG16 cone map R: " + bad));
+    bad = mismatch(
+        rg16, 2, 1, [&](std::size_t i) { return cones16.sqrtRatio[i]; }, 0x1p-24f);
+    QVERIFY2(bad.isEmpty(), qPrintable("RG16 cone map G: " + bad));
     // The albedo is linear on the GPU (half floats: 1e-3 relative).
     const std::vector<float> rgba = readBack(*colour, w, h, 4);
     for (int c = 0; c < 3; ++c) {

@@ -1,6 +1,7 @@
 #include "parallax/render/GpuMaterial.h"
 
 #include "parallax/bake/ConeMapBaker.h"
+#include "parallax/bake/ConeMapReference.h"
 #include "parallax/render/TextureUpload.h"
 #include "parallax/shader/ShaderGenerator.h"
 
@@ -144,13 +145,17 @@ Status GpuMaterial::uploadMaps(const MaterialAssets& assets, const GpuMaterial* 
     // height come along, so a bake adds one texture and an undo none.
     if (!assets.cone.sqrtRatio.empty()) {
         m_coneCpu = assets.cone;
-        if (k.cone)
+        if (k.cone) {
             m_cone = previous->m_cone;
+            m_cone16 = previous->m_cone16;
+        }
     }
     if (!assets.relaxedCone.sqrtRatio.empty()) {
         m_relaxedCpu = assets.relaxedCone;
-        if (k.relaxedCone)
+        if (k.relaxedCone) {
             m_relaxed = previous->m_relaxed;
+            m_relaxed16 = previous->m_relaxed16;
+        }
     }
     if (k.pyramid) {
         m_pyramidCpu = previous->m_pyramidCpu;
@@ -191,14 +196,18 @@ Status GpuMaterial::prepare(Technique technique) {
     const TechniqueInfo& ti = info(technique);
     if ((ti.parallax || ti.needsConeMap || ti.needsPyramid) && !m_height)
         return Error{"the " + std::string(ti.name) + " technique needs a height map"};
-    auto cone = [&](ConeKind kind, std::optional<ConeMap>& cpu, Texture& gpu) -> Status {
+    auto cone = [&](ConeKind kind, std::optional<ConeMap>& cpu, Texture& gpu,
+                    bool& sixteen) -> Status {
         if (gpu)
             return success();
         if (!cpu) {
             cpu = bakeConeMap(m_field, m_wrap, kind);
+            quantiseDown(*cpu, 65535); // as the editor's bakes: RG16 holds it
             ++m_bakes;
         }
-        Result<gl::Object> t = gl::uploadConeMap(m_field, *cpu);
+        sixteen = m_height16 && gl::fitsRG16(*cpu);
+        Result<gl::Object> t = gl::uploadConeMap(
+            m_field, *cpu, sixteen ? gl::ConeFormat::RG16 : gl::ConeFormat::RG32F);
         if (!t)
             return t.error();
         gl::setWrap(*t, m_wrap);
@@ -207,11 +216,11 @@ Status GpuMaterial::prepare(Technique technique) {
         return success();
     };
     if (ti.needsConeMap) {
-        if (Status s = cone(ConeKind::Conservative, m_coneCpu, m_cone); !s)
+        if (Status s = cone(ConeKind::Conservative, m_coneCpu, m_cone, m_cone16); !s)
             return s;
     }
     if (ti.needsRelaxedConeMap) {
-        if (Status s = cone(ConeKind::Relaxed, m_relaxedCpu, m_relaxed); !s)
+        if (Status s = cone(ConeKind::Relaxed, m_relaxedCpu, m_relaxed, m_relaxed16); !s)
             return s;
     }
     if (ti.needsPyramid && !m_atlas) {

@@ -78,7 +78,7 @@ Status traceOnGpu(ShaderCache& shaders, const TraceMaps& maps, Technique techniq
                                     ti.needsConeMap ? ConeKind::Conservative : ConeKind::Relaxed);
             given = &*bakedCone;
         }
-        Result<gl::Object> t = gl::uploadConeMap(field, *given);
+        Result<gl::Object> t = gl::uploadConeMap(field, *given, gl::ConeFormat::RG32F);
         if (!t)
             return t.error();
         gl::setWrap(*t, maps.wrap);

@@ -130,8 +130,20 @@ float bilinear(const Image& image, int channel, float u, float v) {
 
 bool fitsR16(const HeightField& field) {
     for (float h : field.texels) {
-        const float k = h * 65535.0f;
-        if (!(h >= 0.0f && h <= 1.0f) || std::abs(k - std::nearbyint(k)) > 1e-3f)
+        // In double: a float holds k / 65535 to 2^-24 of itself, which above k = 8192 is more
+        // than 10^-3 of a step once multiplied out in float.
+        const double k = static_cast<double>(h) * 65535.0;
+        if (!(h >= 0.0f && h <= 1.0f) || std::abs(k - std::nearbyint(k)) > 1e-3 + k * 0x1p-22)
+            return false;
+    }
+    return true;
+}
+
+bool fitsRG16(const ConeMap& cones) {
+    // Exactly k / 65535, as the bakers' 16-bit rounding and the GL's read of RG16 give it: a cone
+    // read back wider than baked would let rays through.
+    for (float g : cones.sqrtRatio) {
+        if (!(g >= 0.0f && g <= 1.0f) || std::nearbyint(g * 65535.0f) / 65535.0f != g)
             return false;
     }
     return true;
@@ -210,12 +222,25 @@ Result<Object> uploadOrm(const Image* ao, const Image* roughness, const Image* m
                        true, "occlusion/roughness/metallic map");
 }
 
-Result<Object> uploadConeMap(const HeightField& field, const ConeMap& cones) {
+Result<Object> uploadConeMap(const HeightField& field, const ConeMap& cones, ConeFormat format) {
     if (cones.width != field.width || cones.height != field.height)
         return Error{"the cone map's size differs from the height map's"};
     const float* h = field.texels.data();
     const float* g = cones.sqrtRatio.data();
     const int w = field.width;
+    if (format == ConeFormat::RG16) {
+        return makeTexture(field.width, field.height, GL_RG16, GL_RG, GL_UNSIGNED_SHORT, 4,
+                           converted<std::uint16_t>(
+                               w, 2,
+                               [h, g, w](int x, int y, std::uint16_t* out) {
+                                   const std::size_t i = static_cast<std::size_t>(y) * w + x;
+                                   out[0] = static_cast<std::uint16_t>(
+                                       std::nearbyint(std::clamp(h[i], 0.0f, 1.0f) * 65535.0f));
+                                   out[1] =
+                                       static_cast<std::uint16_t>(std::nearbyint(g[i] * 65535.0f));
+                               }),
+                           false, "cone map");
+    }
     return makeTexture(field.width, field.height, GL_RG32F, GL_RG, GL_FLOAT, 8,
                        converted<float>(w, 2,
                                         [h, g, w](int x, int y, float* out) {

@@ -1,6 +1,7 @@
 #include "jobs/BakeRunner.h"
 
 #include "parallax/bake/ConeMapBaker.h"
+#include "parallax/bake/ConeMapReference.h"
 
 #include <QMetaObject>
 #include <QPointer>
@@ -41,9 +42,12 @@ BakeOutcome runBake(const BakeRequest& request, const BakeControl& control) {
         const ConeKind kind =
             request.kind == BakeKind::Cone ? ConeKind::Conservative : ConeKind::Relaxed;
         Result<ConeMap> cone = bakeConeMap(field, request.wrap, kind, control);
-        if (cone)
+        if (cone) {
+            // 16 bits, a 16-bit file's precision (never wider): with a 16-bit height the GPU
+            // then holds the cone map in RG16, half of RG32F (an 8192² map: 256 MiB less).
+            quantiseDown(*cone, 65535);
             outcome.cone = std::move(*cone);
-        else if (isCancelled(cone.error()))
+        } else if (isCancelled(cone.error()))
             outcome.cancelled = true;
         else
             outcome.error = QString::fromStdString(cone.error().message);

@@ -20,7 +20,7 @@ namespace px {
 // Texture units, fixed per sampler (layout(binding = N) in the generated code).
 namespace TextureUnit {
 inline constexpr int Height = 0;      // R16 or R32F height map, mipmapped
-inline constexpr int Cone = 1;        // RG32F: height, sqrt(cone ratio)
+inline constexpr int Cone = 1;        // RG32F or RG16: height, sqrt(cone ratio)
 inline constexpr int MaxMip = 2;      // R32F max-mip pyramid atlas
 inline constexpr int Albedo = 3;      // linear RGBA (sRGB decoded on upload)
 inline constexpr int Normal = 4;      // tangent-space normal map, +Y up

@@ -55,6 +55,10 @@ public:
     bool hasNormalMap() const { return static_cast<bool>(m_normal); }
     bool hasSurfaceMap() const { return static_cast<bool>(m_orm); }
     bool heightIs16Bit() const { return m_height16; }
+    // The cone texture of `kind` is RG16 (heights and cones on the 16-bit grid), not RG32F.
+    bool coneMapIs16Bit(ConeKind kind) const {
+        return kind == ConeKind::Conservative ? m_cone16 : m_relaxed16;
+    }
     const HeightField& heightField() const { return m_field; }
     // Bakes performed so far (cone, relaxed cone, pyramid), for tests and the status bar.
     int bakeCount() const { return m_bakes; }
@@ -88,6 +92,7 @@ private:
     std::optional<ConeMap> m_coneCpu, m_relaxedCpu;
     std::shared_ptr<const MaxMipPyramid> m_pyramidCpu;
     Texture m_cone, m_relaxed, m_atlas;
+    bool m_cone16 = false, m_relaxed16 = false;
     std::vector<int> m_atlasRows;
     int m_atlasTop = 0;
     int m_bakes = 0;

@@ -32,8 +32,14 @@ Result<Object> uploadNormalMap(const Image& normal);
 // Occlusion, roughness and metallic packed into one RGBA16 (glTF's ORM order); absent maps are
 // 1 and the others are resampled to the largest one's size.
 Result<Object> uploadOrm(const Image* ao, const Image* roughness, const Image* metallic);
-// RG32F: R the height, G sqrt(cone ratio), level 0 only, bilinear.
-Result<Object> uploadConeMap(const HeightField& field, const ConeMap& cones);
+enum class ConeFormat { RG16, RG32F };
+
+// True if every cone is exactly k / 65535 (16-bit files, bakes rounded down to 16 bits): with
+// heights that fit R16, RG16 holds the cone map exactly in half the memory of RG32F.
+bool fitsRG16(const ConeMap& cones);
+
+// R the height, G sqrt(cone ratio), level 0 only, bilinear.
+Result<Object> uploadConeMap(const HeightField& field, const ConeMap& cones, ConeFormat format);
 // R32F max-mip atlas (MaxMipPyramid::atlas()); `rows` receives each level's first row.
 Result<Object> uploadMaxMipAtlas(const MaxMipPyramid& pyramid, std::vector<int>& rows);
 // RG32F from two floats per texel, level 0 only, bilinear.
