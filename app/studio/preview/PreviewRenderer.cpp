@@ -37,6 +37,18 @@ std::vector<QRect> sampleBoxes(int width, int height) {
     return boxes;
 }
 
+// The whole view for the heat map, in bands of about this many pixels: a slice of the measurement
+// draws whole bands, and at 8192² one band of `exact` costs llvmpipe a few tens of ms.
+constexpr int kBandPixels = 8192;
+
+std::vector<QRect> bands(int width, int height) {
+    const int rows = std::max(1, kBandPixels / width);
+    std::vector<QRect> boxes;
+    for (int y = 0; y < height; y += rows)
+        boxes.emplace_back(0, y, width, std::min(rows, height - y));
+    return boxes;
+}
+
 // A dark neutral backdrop, sRGB-encoded as the colour output is.
 constexpr glm::vec4 kBackground{0.16f, 0.17f, 0.19f, 1.0f};
 
@@ -69,6 +81,17 @@ std::vector<std::weak_ptr<MapUpload>>& runningUploads() {
 // Uploads of more texels than this go up on a worker (jobs/MapUpload.h): 4096², about 0.3 s on
 // the GUI thread with llvmpipe.
 std::size_t g_backgroundTexels = std::size_t(4096) * 4096;
+
+// A measurement under way: the view's pass, then exact's, drawn a few boxes at a time into the
+// surface target (u, v, t, fetches; -1 outside the boxes).
+struct Measurement {
+    PreviewScene scene;
+    double frameMs = 0.0;
+    std::vector<QRect> boxes;
+    std::size_t next = 0;   // the next box to draw
+    bool reference = false; // the second pass: exact
+    Image hits;             // the first pass's output
+};
 
 } // namespace
 
@@ -197,33 +220,37 @@ struct PreviewRenderer::Impl {
                std::ranges::all_of(techniques(scene), [&](Technique t) { return gpu->ready(t); });
     }
 
-    // The surface output (u, v, t, fetches) of `material` inside `boxes` of the view; the rest
-    // of the image holds t = -1 (no surface), so it is left out of every figure.
-    Result<Image> surfaces(const PreviewScene& scene, const Material& material, DrawOptions options,
-                           const std::vector<QRect>& boxes) {
+    std::optional<Measurement> measurement;
+
+    // Draws box `m.next` of the current pass (the target bound) and moves on.
+    Status drawNextBox(Measurement& m) {
         QOpenGLFunctions* f = gl();
-        surfaceTarget->bind();
-        f->glDisable(GL_SCISSOR_TEST);
-        f->glClearColor(-1.0f, -1.0f, -1.0f, -1.0f);
-        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        options.clear = true; // inside the box
-        f->glEnable(GL_SCISSOR_TEST);
-        Status status = success();
-        for (const QRect& box : boxes) {
-            // GL counts rows from the bottom.
-            f->glScissor(box.x(), surfaceTarget->size().y - box.y() - box.height(), box.width(),
-                         box.height());
-            status = renderer->draw(*gpu, material, scene.view.camera, scene.view.light, options,
-                                    surfaceTarget->size());
-            if (!status)
-                break;
+        if (m.next == 0) {
+            f->glDisable(GL_SCISSOR_TEST);
+            f->glClearColor(-1.0f, -1.0f, -1.0f, -1.0f);
+            f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         }
+        DrawOptions o = options(m.scene);
+        o.output = ShaderOutput::Surface;
+        o.clear = true; // inside the box
+        Material material = m.scene.material;
+        if (m.reference) {
+            // The view's hits come from the kernels it draws with (production: hardware
+            // filtering); the reference is the exact walk in the verify flavour, equal to the
+            // CPU's.
+            material.technique = Technique::Exact;
+            material.params = info(Technique::Exact).defaults;
+            o.kernels = KernelFlavour::Verify;
+        }
+        const QRect& box = m.boxes[m.next++];
+        f->glEnable(GL_SCISSOR_TEST);
+        // GL counts rows from the bottom.
+        f->glScissor(box.x(), surfaceTarget->size().y - box.y() - box.height(), box.width(),
+                     box.height());
+        Status status = renderer->draw(*gpu, material, m.scene.view.camera, m.scene.view.light, o,
+                                       surfaceTarget->size());
         f->glDisable(GL_SCISSOR_TEST);
-        if (!status)
-            return status.error();
-        Image image = surfaceTarget->read();
-        f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        return image;
+        return status;
     }
 
     DrawOptions options(const PreviewScene& scene) const {
@@ -300,19 +327,9 @@ Result<double> PreviewRenderer::draw(const PreviewScene& scene, QSize pixels, un
         .count();
 }
 
-Result<PreviewStats> PreviewRenderer::measure(const PreviewScene& scene, QSize pixels,
-                                              double frameMs) {
+Status PreviewRenderer::beginMeasure(const PreviewScene& scene, QSize pixels, double frameMs) {
     Impl& d = *m_impl;
-    PreviewStats stats;
-    stats.frameMs = frameMs;
-    if (!scene.traceable || !scene.assets || scene.assets->height.empty()) {
-        m_heatMap = {};
-        return stats;
-    }
-    if (Status s = d.sync(scene); !s)
-        return s.error();
-    if (d.uploading())
-        return stats; // not valid: measured once the scene's maps are up
+    d.measurement.reset();
     // The view's own size: marching techniques read the height level each pixel's footprint
     // asks for, so a smaller render would measure another picture.
     const glm::ivec2 size(std::max(1, pixels.width()), std::max(1, pixels.height()));
@@ -322,37 +339,80 @@ Result<PreviewStats> PreviewRenderer::measure(const PreviewScene& scene, QSize p
             return target.error();
         d.surfaceTarget = std::move(*target);
     }
-    // Every pixel for the heat map; else a stratified sample of boxes, enough for a p99.
-    const std::vector<QRect> boxes = scene.overlays.heatMap
-                                         ? std::vector<QRect>{QRect(0, 0, size.x, size.y)}
-                                         : sampleBoxes(size.x, size.y);
-    DrawOptions options = d.options(scene);
-    options.output = ShaderOutput::Surface;
-    Material exact = scene.material;
-    exact.technique = Technique::Exact;
-    exact.params = info(Technique::Exact).defaults;
-    Result<Image> hits = d.surfaces(scene, scene.material, options, boxes);
-    if (!hits)
-        return hits.error();
-    // The view's hits come from the kernels it draws with (production: hardware filtering); the
-    // reference is the exact walk in the verify flavour, equal to the CPU's.
-    DrawOptions referenceOptions = options;
-    referenceOptions.kernels = KernelFlavour::Verify;
-    Result<Image> reference = d.surfaces(scene, exact, referenceOptions, boxes);
-    if (!reference)
-        return reference.error();
-    const SurfaceErrors errors =
-        compareSurfaces(*hits, *reference, scene.assets->height.width, scene.assets->height.height);
-    stats.fetchesPerPixel = errors.meanFetches;
-    stats.meanError = errors.meanError;
-    stats.p99Error = errors.p99Error;
-    stats.maxError = errors.maxError;
-    stats.otherSurface = errors.otherSurface;
-    stats.pixels = errors.pixels;
-    stats.steepPixels = errors.steepPixels;
-    stats.valid = true;
-    m_heatMap = scene.overlays.heatMap ? heatMapImage(errors) : QImage();
-    return stats;
+    // Every pixel for the heat map, else a stratified sample of boxes, enough for a p99.
+    d.measurement.emplace();
+    d.measurement->scene = scene;
+    d.measurement->frameMs = frameMs;
+    d.measurement->boxes =
+        scene.overlays.heatMap ? bands(size.x, size.y) : sampleBoxes(size.x, size.y);
+    return success();
+}
+
+std::optional<Result<PreviewStats>> PreviewRenderer::measureStep(double sliceMs) {
+    Impl& d = *m_impl;
+    PreviewStats stats;
+    if (!d.measurement)
+        return stats;
+    Measurement& m = *d.measurement;
+    stats.frameMs = m.frameMs;
+    auto done = [&](Result<PreviewStats> result) {
+        d.measurement.reset();
+        return std::optional<Result<PreviewStats>>(std::move(result));
+    };
+    const PreviewScene& scene = m.scene;
+    if (!scene.traceable || !scene.assets || scene.assets->height.empty()) {
+        m_heatMap = {};
+        return done(stats);
+    }
+    if (Status s = d.sync(scene); !s)
+        return done(s.error());
+    if (d.uploading())
+        return done(stats); // not valid: measured once the scene's maps are up
+    const auto start = std::chrono::steady_clock::now();
+    QOpenGLFunctions* f = gl();
+    d.surfaceTarget->bind();
+    for (;;) {
+        if (Status s = d.drawNextBox(m); !s) {
+            f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            return done(s.error());
+        }
+        if (m.next == m.boxes.size()) {
+            Image image = d.surfaceTarget->read();
+            if (m.reference) {
+                f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                const SurfaceErrors errors = compareSurfaces(
+                    m.hits, image, scene.assets->height.width, scene.assets->height.height);
+                stats.fetchesPerPixel = errors.meanFetches;
+                stats.meanError = errors.meanError;
+                stats.p99Error = errors.p99Error;
+                stats.maxError = errors.maxError;
+                stats.otherSurface = errors.otherSurface;
+                stats.pixels = errors.pixels;
+                stats.steepPixels = errors.steepPixels;
+                stats.valid = true;
+                m_heatMap = scene.overlays.heatMap ? heatMapImage(errors) : QImage();
+                return done(stats);
+            }
+            m.hits = std::move(image);
+            m.reference = true;
+            m.next = 0;
+            d.surfaceTarget->bind();
+        }
+        f->glFinish(); // what the slice has cost so far
+        if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count() >= sliceMs)
+            break;
+    }
+    f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return std::nullopt;
+}
+
+void PreviewRenderer::cancelMeasure() {
+    m_impl->measurement.reset();
+}
+
+bool PreviewRenderer::measuring() const {
+    return m_impl->measurement.has_value();
 }
 
 bool PreviewRenderer::uploading() const {

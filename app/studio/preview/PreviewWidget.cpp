@@ -19,7 +19,13 @@ namespace px::studio {
 namespace {
 // How close (logical pixels) a press must be to the wipe divider to grab it.
 constexpr double kWipeGrab = 8.0;
+// A slice of the measurement's drawing between two turns of the event loop.
+double g_measureSliceMs = 30.0;
 } // namespace
+
+void PreviewWidget::setMeasureSliceMs(double ms) {
+    g_measureSliceMs = ms;
+}
 
 PreviewWidget::PreviewWidget(QWidget* parent) : QOpenGLWidget(parent) {
     setMinimumSize(96, 72);
@@ -30,6 +36,10 @@ PreviewWidget::PreviewWidget(QWidget* parent) : QOpenGLWidget(parent) {
     m_measureTimer->setSingleShot(true);
     m_measureTimer->setInterval(150);
     connect(m_measureTimer, &QTimer::timeout, this, &PreviewWidget::measure);
+    m_sliceTimer = new QTimer(this);
+    m_sliceTimer->setSingleShot(true);
+    m_sliceTimer->setInterval(0);
+    connect(m_sliceTimer, &QTimer::timeout, this, &PreviewWidget::measureSlice);
 }
 
 PreviewWidget::~PreviewWidget() {
@@ -50,10 +60,17 @@ void PreviewWidget::releaseGl() {
 
 void PreviewWidget::setScene(const PreviewScene& scene) {
     m_scene = scene;
-    m_measured = false;
+    dropMeasurement();
     m_stats.valid = false;
     m_measureTimer->start();
     update();
+}
+
+void PreviewWidget::dropMeasurement() {
+    m_measured = false;
+    m_sliceTimer->stop();
+    if (m_renderer)
+        m_renderer->cancelMeasure();
 }
 
 void PreviewWidget::measure() {
@@ -61,9 +78,31 @@ void PreviewWidget::measure() {
         return;
     }
     makeCurrent();
-    Result<PreviewStats> stats =
-        m_renderer->measure(m_scene, size() * devicePixelRatioF(), m_stats.frameMs);
+    const Status begun =
+        m_renderer->beginMeasure(m_scene, size() * devicePixelRatioF(), m_stats.frameMs);
     doneCurrent();
+    if (!begun) {
+        m_renderError = QString::fromStdString(begun.error().message);
+        update();
+        return;
+    }
+    measureSlice();
+}
+
+void PreviewWidget::measureSlice() {
+    if (!m_renderer || !isVisible()) {
+        dropMeasurement(); // again when it shows
+        return;
+    }
+    makeCurrent();
+    std::optional<Result<PreviewStats>> measured = m_renderer->measureStep(g_measureSliceMs);
+    doneCurrent();
+    ++m_measureSlices;
+    if (!measured) {
+        m_sliceTimer->start(); // the rest after the events waiting
+        return;
+    }
+    const Result<PreviewStats>& stats = *measured;
     m_measured = !m_renderer->uploading(); // else again once the maps are up
     if (stats)
         m_stats = *stats;
@@ -123,7 +162,9 @@ void PreviewWidget::initializeGL() {
     m_renderError.clear();
 }
 
-void PreviewWidget::resizeGL(int, int) {}
+void PreviewWidget::resizeGL(int, int) {
+    dropMeasurement(); // measured again at the new size
+}
 
 void PreviewWidget::paintGL() {
     const QSize pixels = size() * devicePixelRatioF();
@@ -143,7 +184,7 @@ void PreviewWidget::paintGL() {
             // Drawn with the maps there were: again until the scene's are up, then measured.
             m_measured = false;
             QTimer::singleShot(50, this, qOverload<>(&PreviewWidget::update));
-        } else if (!m_measured && !m_measureTimer->isActive()) {
+        } else if (!m_measured && !m_measureTimer->isActive() && !m_renderer->measuring()) {
             m_measureTimer->start();
         }
     }

@@ -40,6 +40,10 @@ public:
     const GpuMaterial* gpuMaterial() const;
     // Whether the scene's maps are still going up on a worker (the view draws what it has).
     bool uploading() const;
+    // Turns of the event loop the figures have taken so far (tests), and the drawing each takes
+    // at most (about; 30 ms by default, tests lower it).
+    int measureSlices() const { return m_measureSlices; }
+    static void setMeasureSliceMs(double ms);
 
     // `scene` drawn offscreen at `pixels` on this view's context, without the overlays (heat map,
     // messages): a picture to save. Fails without a live preview or over the GL's limits.
@@ -70,8 +74,10 @@ private:
     enum class Drag { None, Orbit, Light, Wipe };
     void releaseGl();
     // The figures against the exact intersection need two extra passes: taken once the scene
-    // has stayed still for a moment, not on every frame of a drag.
+    // has stayed still for a moment, not on every frame of a drag, a slice per event-loop turn.
     void measure();
+    void measureSlice();
+    void dropMeasurement();
     void drawOverlays(class QPainter& painter, bool heatMap, bool message);
     void drawHeatLegend(class QPainter& painter);
 
@@ -81,6 +87,8 @@ private:
     int m_frames = 0;
     std::unique_ptr<PreviewRenderer> m_renderer;
     class QTimer* m_measureTimer;
+    class QTimer* m_sliceTimer;
+    int m_measureSlices = 0;
     bool m_measured = false;
     Drag m_drag = Drag::None;
     QPointF m_lastPos;
