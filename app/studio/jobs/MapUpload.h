@@ -25,7 +25,7 @@ public:
     // prepares the derived maps `techniques` read.
     MapUpload(std::shared_ptr<const MaterialAssets> assets, WrapMode wrap,
               const GpuMaterial* previous, std::vector<Technique> techniques);
-    ~MapUpload();
+    ~MapUpload(); // does not wait for the worker
     MapUpload(const MapUpload&) = delete;
     MapUpload& operator=(const MapUpload&) = delete;
 
@@ -37,14 +37,20 @@ public:
     // Once finished: the material, or why there is none (no context could share the views').
     Result<std::shared_ptr<GpuMaterial>> result() const;
 
-    // Uploads finished on a worker so far (tests).
+    // Uploads finished on a worker so far, and those whose upload was destroyed first (their
+    // textures released on the worker) (tests).
     static int completed();
+    static int discarded();
+    // Tests: workers wait at their start while held.
+    static void holdWorkers(bool held);
 
 private:
     struct Made;
+    struct Handover;
     std::shared_ptr<const MaterialAssets> m_assets;
     WrapMode m_wrap;
     std::vector<Technique> m_techniques;
+    std::shared_ptr<Handover> m_handover;
     QFuture<std::shared_ptr<Made>> m_future;
 };
 
