@@ -213,6 +213,87 @@ private slots:
         QCOMPARE(right->gpuMaterial()->bakeCount(), 0);
     }
 
+    // The figures take two extra passes (at 8192² 0.2-0.4 s on llvmpipe): drawn a slice per
+    // event-loop turn, with the same result as in one go; a scene change mid-way starts over.
+    void figuresAreMeasuredInSlices() {
+        auto w = makeWindow(1);
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        auto equal = [](const PreviewStats& a, const PreviewStats& b) {
+            return a.valid && b.valid && a.pixels == b.pixels && a.steepPixels == b.steepPixels &&
+                   a.fetchesPerPixel == b.fetchesPerPixel && a.meanError == b.meanError &&
+                   a.p99Error == b.p99Error && a.maxError == b.maxError &&
+                   a.otherSurface == b.otherSurface;
+        };
+        preview->setScene(preview->scene()); // measured again, the window settled
+        QVERIFY(waitForFigures(preview));
+        const PreviewStats whole = preview->stats();
+        QVERIFY(whole.pixels > 0);
+
+        PreviewWidget::setMeasureSliceMs(0.0); // a box per slice
+        const auto restore = qScopeGuard([] { PreviewWidget::setMeasureSliceMs(30.0); });
+        const int before = preview->measureSlices();
+        preview->setScene(preview->scene());
+        QVERIFY(waitForFigures(preview));
+        QVERIFY2(preview->measureSlices() - before >= 2 * 24, // 24 sample boxes, two passes
+                 qPrintable(QString::number(preview->measureSlices() - before)));
+        auto text = [](const PreviewStats& a) {
+            return QString("%1 px, %2 steep, %3 fetches, mean %4, p99 %5, max %6, %7 other")
+                .arg(a.pixels)
+                .arg(a.steepPixels)
+                .arg(a.fetchesPerPixel, 0, 'g', 9)
+                .arg(a.meanError, 0, 'g', 9)
+                .arg(a.p99Error, 0, 'g', 9)
+                .arg(a.maxError, 0, 'g', 9)
+                .arg(a.otherSurface);
+        };
+        QVERIFY2(equal(preview->stats(), whole),
+                 qPrintable(text(preview->stats()) + " in slices, " + text(whole) + " at once"));
+
+        // Half-way through, the heat map goes on: measured over every pixel, from the start.
+        const int started = preview->measureSlices();
+        preview->setScene(preview->scene());
+        QVERIFY(QTest::qWaitFor([&] { return preview->measureSlices() >= started + 30; }));
+        QVERIFY(!preview->stats().valid);
+        PreviewScene heat = preview->scene();
+        heat.overlays.heatMap = true;
+        preview->setScene(heat);
+        QVERIFY(waitForFigures(preview));
+        const PreviewStats interrupted = preview->stats();
+        QVERIFY(interrupted.pixels > whole.pixels);
+        PreviewWidget::setMeasureSliceMs(30.0);
+        preview->setScene(heat);
+        QVERIFY(waitForFigures(preview));
+        QVERIFY2(equal(preview->stats(), interrupted),
+                 qPrintable(text(preview->stats()) + ", " + text(interrupted) + " interrupted"));
+    }
+
+    // A view closed while its maps go up does not wait for the worker (1.1-1.4 s at 8192² on
+    // llvmpipe): the worker finishes alone and releases what it made.
+    void closingAViewDoesNotWaitForItsUpload() {
+        PreviewRenderer::setBackgroundUploadTexels(0);
+        const auto restore = qScopeGuard([] {
+            MapUpload::holdWorkers(false);
+            PreviewRenderer::setBackgroundUploadTexels(4096u * 4096u);
+        });
+        auto w = makeWindow(1);
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        const int completed = MapUpload::completed(), discarded = MapUpload::discarded();
+        MapUpload::holdWorkers(true);
+        const std::string ramp = writeRamp(m_dir, "closed_height.png", 256);
+        QVERIFY(!ramp.empty());
+        QVERIFY(w->loadMap(MapKind::Height, QString::fromStdString(ramp)));
+        QVERIFY(QTest::qWaitFor([&] { return preview->uploading(); }));
+        w.reset(); // the worker is held: this returns at once only if it does not wait for it
+        QCOMPARE(MapUpload::completed(), completed);
+        MapUpload::holdWorkers(false);
+        QTRY_COMPARE(MapUpload::discarded(), discarded + 1);
+        QCOMPARE(MapUpload::completed(), completed);
+    }
+
     void viewportsTraceDifferentTechniques() {
         auto w = makeWindow(2);
         QVERIFY(w);
