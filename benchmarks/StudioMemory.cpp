@@ -24,6 +24,7 @@
 #include <QElapsedTimer>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -161,6 +162,7 @@ int main(int argc, char** argv) {
     const double loadSeconds = clock.elapsed() / 1000.0;
     const qint64 loadStall = loadWatch.longest;
     const double afterLoad = statusMiB("VmHWM");
+    const double residentLoad = statusMiB("VmRSS");
 
     StallWatch bakeWatch;
     clock.restart();
@@ -170,6 +172,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "parallax-bench-studio-memory: the cone bake did not finish\n");
         return 1;
     }
+    // Where the phase peaks: the bake, or the cone view's upload after it.
+    const double bakePeak = statusMiB("VmHWM");
+    const double residentBake = statusMiB("VmRSS");
+    restartPeak();
     // What the bake was for: the last view traces `cone`, so its map is on the GPU too.
     window.document()->edit("cone", [views](DocumentState& s) {
         s.setView(views - 1, {Technique::Cone, info(Technique::Cone).defaults});
@@ -181,7 +187,9 @@ int main(int argc, char** argv) {
     }
     const double bakeSeconds = clock.elapsed() / 1000.0;
     const qint64 bakeStall = bakeWatch.longest;
-    const double afterBake = statusMiB("VmHWM");
+    const double afterBake = std::max(bakePeak, statusMiB("VmHWM"));
+    const double viewPeak = statusMiB("VmHWM");
+    const double residentView = statusMiB("VmRSS");
 
     std::printf("editor, %d² 16-bit height map, %d viewports, %s\n", size, views,
                 gl.renderer.toUtf8().constData());
@@ -191,5 +199,8 @@ int main(int argc, char** argv) {
                 static_cast<long long>(loadStall), loadSeconds);
     std::printf("| cone map baked, a view on `cone` drawn | %.0f MiB | %lld ms | %.1f s |\n",
                 afterBake, static_cast<long long>(bakeStall), bakeSeconds);
+    std::printf("\nresident after the load %.0f MiB; the bake's peak %.0f MiB, resident after it "
+                "%.0f MiB; the cone view's peak %.0f MiB, resident after it %.0f MiB\n",
+                residentLoad, bakePeak, residentBake, viewPeak, residentView);
     return 0;
 }
