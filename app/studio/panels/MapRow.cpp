@@ -17,7 +17,31 @@ namespace px::studio {
 
 namespace {
 constexpr int kThumbnail = 40; // logical pixels; drawn at the screen's pixel ratio
+int g_thumbnails = 0;
+
+// The texels of `kind`'s map, as a weak handle (SharedTexels::identity).
+std::weak_ptr<const void> texelsOf(const MaterialAssets& a, MapKind kind) {
+    switch (kind) {
+    case MapKind::Albedo:
+        return a.albedo.pixels.identity();
+    case MapKind::Height:
+        return a.height.texels.identity();
+    case MapKind::Normal:
+        return a.normal.pixels.identity();
+    case MapKind::Cone:
+        return a.cone.sqrtRatio.identity();
+    case MapKind::RelaxedCone:
+        return a.relaxedCone.sqrtRatio.identity();
+    case MapKind::Ao:
+        return a.ao.pixels.identity();
+    case MapKind::Roughness:
+        return a.roughness.pixels.identity();
+    case MapKind::Metallic:
+        return a.metallic.pixels.identity();
+    }
+    return {};
 }
+} // namespace
 
 MapRow::MapRow(MapKind kind, bool bakeable, QWidget* parent) : QWidget(parent), m_kind(kind) {
     setAcceptDrops(true);
@@ -114,6 +138,12 @@ void MapRow::refresh(const DocumentState& state) {
                              : devicePixelRatioF();
     const int side = static_cast<int>(kThumbnail * ratio);
     const MaterialAssets& a = *state.assets;
+    const std::weak_ptr<const void> texels = texelsOf(a, m_kind);
+    const std::owner_less<std::weak_ptr<const void>> before;
+    if (side == m_shownSide && !before(texels, m_shownTexels) && !before(m_shownTexels, texels))
+        return;
+    m_shownTexels = texels;
+    m_shownSide = side;
     QImage image;
     switch (m_kind) {
     case MapKind::Albedo:
@@ -145,10 +175,15 @@ void MapRow::refresh(const DocumentState& state) {
         m_thumbnail->clear();
         return;
     }
+    ++g_thumbnails;
     QPixmap pixmap =
         QPixmap::fromImage(image.scaled(side, side, Qt::KeepAspectRatio, Qt::SmoothTransformation));
     pixmap.setDevicePixelRatio(ratio);
     m_thumbnail->setPixmap(pixmap);
+}
+
+int MapRow::thumbnailsMade() {
+    return g_thumbnails;
 }
 
 void MapRow::dragEnterEvent(QDragEnterEvent* event) {

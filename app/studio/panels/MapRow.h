@@ -6,6 +6,7 @@
 #include "parallax/material/MapKind.h"
 
 #include <QWidget>
+#include <memory>
 
 class QLabel;
 class QToolButton;
@@ -28,6 +29,8 @@ public:
     // A line under the source in warning colour (a baked map out of date); empty hides it.
     void setWarning(const QString& text);
     QString warningText() const;
+    // Thumbnails made so far by every row (tests: a row makes one only when its map changes).
+    static int thumbnailsMade();
 
 signals:
     void loadRequested(px::MapKind kind);
@@ -48,6 +51,10 @@ private:
     QToolButton* m_load;
     QToolButton* m_clear;
     QToolButton* m_bake = nullptr;
+    // The texels and size the thumbnail shows: made again only when they change (a thumbnail of
+    // an 8192² map reads 64 M texels, and every edit of the material refreshes the rows).
+    std::weak_ptr<const void> m_shownTexels;
+    int m_shownSide = 0;
 };
 
 } // namespace px::studio

@@ -53,6 +53,9 @@ public:
     // For interfaces that take a vector (read only).
     const std::vector<T>& vector() const { return m_data ? *m_data : emptyVector(); }
 
+    // Which texels these are, as a weak handle (it keeps nothing alive): the same for copies,
+    // another once a write detaches. Compare with std::owner_less.
+    std::weak_ptr<const void> identity() const { return m_data; }
     // Whether the two hold the same texels in memory (not a copy of them).
     bool sharesWith(const SharedTexels& other) const { return m_data && m_data == other.m_data; }
 
