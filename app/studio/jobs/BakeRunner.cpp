@@ -1,5 +1,6 @@
 #include "jobs/BakeRunner.h"
 
+#include "jobs/BackgroundPriority.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/ConeMapReference.h"
 
@@ -26,6 +27,7 @@ QString bakeTitle(BakeKind kind) {
 namespace {
 
 BakeOutcome runBake(const BakeRequest& request, const BakeControl& control) {
+    lowerThisThreadsPriority(); // a pool thread: background work only
     BakeOutcome outcome;
     outcome.request = request;
     const auto start = std::chrono::steady_clock::now();
@@ -60,6 +62,7 @@ BakeOutcome runBake(const BakeRequest& request, const BakeControl& control) {
 } // namespace
 
 BakeRunner::BakeRunner(QObject* parent) : QObject(parent) {
+    lowerTbbWorkersPriority(); // the bakers' parallel loops
     connect(&m_watcher, &QFutureWatcher<BakeOutcome>::finished, this, &BakeRunner::done);
 }
 
