@@ -5,7 +5,7 @@
 // without running a 10 ms timer through each phase. Needs a display (Xvfb will do) and, for the
 // previews, GL 4.3.
 //
-//   parallax-bench-studio-memory [--size N] [--views 1..4]
+//   parallax-bench-studio-memory [--size N] [--views 1..4] [--slow-events MS]
 //
 // Memory is measured here rather than in a unit test: what it reads depends on the GL driver
 // (llvmpipe keeps textures in process memory, a GPU does not).
@@ -69,6 +69,29 @@ struct StallWatch {
     }
 };
 
+// With --slow-events MS: every event whose handling took longer is printed (receiver, type, ms):
+// where the event loop's gaps come from.
+class TracingApplication : public QApplication {
+public:
+    using QApplication::QApplication;
+    qint64 slowMs = 0;
+    bool notify(QObject* receiver, QEvent* event) override {
+        if (slowMs <= 0)
+            return QApplication::notify(receiver, event);
+        const int type = event->type();
+        QElapsedTimer clock;
+        clock.start();
+        const bool handled = QApplication::notify(receiver, event);
+        if (const qint64 ms = clock.elapsed(); ms >= slowMs) {
+            const QObject* parent = receiver->parent();
+            std::fprintf(stderr, "slow event: %lld ms, type %d, %s (parent %s)\n",
+                         static_cast<long long>(ms), type, receiver->metaObject()->className(),
+                         parent ? parent->metaObject()->className() : "-");
+        }
+        return handled;
+    }
+};
+
 bool waitUntil(const std::function<bool()>& done, int timeoutMs) {
     QElapsedTimer clock;
     clock.start();
@@ -105,7 +128,7 @@ bool drawEveryView(MainWindow& window, int views) {
 
 int main(int argc, char** argv) {
     setUpOpenGl();
-    QApplication app(argc, argv);
+    TracingApplication app(argc, argv);
     int size = 8192, views = 2;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
@@ -113,9 +136,12 @@ int main(int argc, char** argv) {
             size = std::atoi(argv[i + 1]);
         else if (flag == "--views")
             views = std::atoi(argv[i + 1]);
+        else if (flag == "--slow-events")
+            app.slowMs = std::atoi(argv[i + 1]);
     }
     if (size < 16 || views < 1 || views > 4) {
-        std::fprintf(stderr, "usage: parallax-bench-studio-memory [--size N>=16] [--views 1..4]\n");
+        std::fprintf(stderr, "usage: parallax-bench-studio-memory [--size N>=16] [--views 1..4] "
+                             "[--slow-events MS]\n");
         return 2;
     }
     const GlProbe& gl = probeOpenGl();

@@ -3,6 +3,8 @@
 // baking a cone map enables the cone technique, undo restores, and a corrupt file changes nothing.
 
 #include "StudioTestSupport.h"
+#include "jobs/BackgroundPriority.h"
+#include "jobs/BakeRunner.h"
 #include "jobs/MapUpload.h"
 #include "panels/ComparePanel.h"
 #include "panels/MapRow.h"
@@ -292,6 +294,40 @@ private slots:
         MapUpload::holdWorkers(false);
         QTRY_COMPARE(MapUpload::discarded(), discarded + 1);
         QCOMPARE(MapUpload::completed(), completed);
+    }
+
+    // A row makes its thumbnail when its map changes, not on every edit of the material (an
+    // 8192² map's thumbnail reads 64 M texels).
+    void thumbnailsFollowTheirMapsOnly() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        const int start = MapRow::thumbnailsMade();
+        w->document()->edit("scale", [](DocumentState& s) { s.material.heightScale *= 1.5f; });
+        w->document()->edit("scale", [](DocumentState& s) { s.material.heightScale *= 0.5f; });
+        QCOMPARE(MapRow::thumbnailsMade(), start);
+        w->startBake(BakeKind::Cone);
+        QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 60000);
+        QVERIFY(w->document()->state().hasMap(MapKind::Cone));
+        QCOMPARE(MapRow::thumbnailsMade(), start + 1); // the cone map's alone
+        const std::string ramp = writeRamp(m_dir, "thumb_height.png", 32);
+        QVERIFY(!ramp.empty());
+        QVERIFY(w->loadMap(MapKind::Height, QString::fromStdString(ramp)));
+        QTRY_VERIFY(MapRow::thumbnailsMade() > start + 1); // the new height map's
+    }
+
+    // Bakes run below the GUI thread: TBB's workers (and the bake's job thread) at a higher nice
+    // value, the GUI thread as it was (on 2 cores a bake otherwise starved the event loop).
+    void bakesRunBelowTheGuiThread() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        const int gui = thisThreadsNice();
+        // TBB's workers, once a baker's observer is in place (the window's BakeRunner).
+        QCOMPARE(tbbWorkerNice(), kBackgroundNice);
+        // A bake in the editor leaves the GUI thread's priority as it was.
+        w->startBake(BakeKind::Cone);
+        QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 60000);
+        QVERIFY(w->document()->state().hasMap(MapKind::Cone));
+        QCOMPARE(thisThreadsNice(), gui);
     }
 
     void viewportsTraceDifferentTechniques() {
