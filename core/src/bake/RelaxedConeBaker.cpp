@@ -45,7 +45,7 @@ struct Box {
 // A cell of a leaf node: where it is in the node, the sectors it can fall in and its corners.
 struct Cell {
     int i, j;
-    std::uint8_t falls;
+    Sectors falls;
     cone::Corners k;
 };
 
@@ -132,18 +132,22 @@ public:
                     for (int j = 0; j < step && n.y * step + j < p.height(0); ++j) {
                         for (int i = 0; i < step && n.x * step + i < p.width(0); ++i) {
                             const int x = n.x * step + i, y = n.y * step + j;
-                            if (const std::uint8_t falls = p.falls(x, y))
+                            if (const Sectors falls = p.falls(x, y))
                                 cells[cellCount++] = {i, j, falls, corners(x, y)};
                         }
                     }
+                    const float mAny = n.level == 1 ? p.maxFalling(n.level, n.x, n.y) : 0.0f;
                     for (int k = 0; k < count && cellCount > 0; ++k) {
                         State& s = apexes[k];
                         const Offsets o = offsets(n, Box{s.b.x, s.b.x, s.b.y, s.b.y});
-                        const std::uint8_t sectors = sectorsOf(o.x0, o.x1, o.y0, o.y1, g);
                         // A level-0 node is the whole map's one cell: it has no maxima stored.
+                        // Most nodes are too far or too low for this apex in any direction.
+                        if (count > 1 && n.level == 1 && bound(o, s.c * (mAny - s.b.h)) >= 1.0f)
+                            continue;
+                        const Sectors sectors = sectorsOf(o.x0, o.x1, o.y0, o.y1, g);
                         if (count > 1 && n.level == 1) {
                             const float m = p.maxFalling(n.level, n.x, n.y, sectors);
-                            if (bound(o, std::max(0.0f, s.c * (m - s.b.h))) >= 1.0f)
+                            if (bound(o, s.c * (m - s.b.h)) >= 1.0f)
                                 continue;
                         }
                         for (int c = 0; c < cellCount; ++c)
@@ -172,8 +176,8 @@ public:
                         const Node k{cl, 2 * n.x + i, 2 * n.y + j, n.baseX, n.baseY};
                         if (k.x >= cw || k.y >= ch)
                             continue;
-                        const float bound = tileBound(k, tileBox, apexes, count);
-                        if (bound >= 1.0f)
+                        float bound = 0.0f;
+                        if (tileBound(k, tileBox, apexes, count, &bound) >= 1.0f)
                             continue;
                         int at = open++;
                         for (; at > 0 && bounds[at - 1] < bound; --at) {
@@ -206,15 +210,34 @@ private:
     // to the node form the rectangle node - box, whose nearest point d and direction sectors hold
     // for every pair; apex a needs d < c_a (m - h_a) for the node's falling maximum m. Squares
     // avoid a square root per node, with a margin so that a node is skipped only if certainly
-    // useless.
+    // useless. With `order`, also the priority the nodes are opened in: the same bound over the
+    // node's 45-degree octants (a coarser sector set), as before there were 16 sectors, so that
+    // cells are met in the same order and the cones come out the same (the per-cell bound's
+    // tolerance depends on the order).
     template <typename States>
-    float tileBound(const Node& n, const Box& box, const States& apexes, int count) const {
+    float tileBound(const Node& n, const Box& box, const States& apexes, int count,
+                    float* order = nullptr) const {
         const Offsets o = offsets(n, box);
-        const float m = p.maxFalling(n.level, n.x, n.y, sectorsOf(o.x0, o.x1, o.y0, o.y1, g));
-        float reach = 0.0f; // max over apexes of c_a (m - h_a)
+        // First over all sectors: most nodes are too far or too low in any direction.
+        if (bound(o, reach(p.maxFalling(n.level, n.x, n.y), apexes, count)) >= 1.0f)
+            return kFar;
+        const Sectors sectors = sectorsOf(o.x0, o.x1, o.y0, o.y1, g);
+        const float m = p.maxFalling(n.level, n.x, n.y, sectors);
+        const float b = bound(o, reach(m, apexes, count));
+        if (order && b < 1.0f) {
+            const Sectors rest = octants(sectors) & static_cast<Sectors>(~sectors);
+            const float octantMax = std::max(m, p.maxFalling(n.level, n.x, n.y, rest));
+            *order = bound(o, reach(octantMax, apexes, count));
+        }
+        return b;
+    }
+
+    // The largest c_a (m - h_a) among the apexes, for a maximum m.
+    template <typename States> static float reach(float m, const States& apexes, int count) {
+        float r = 0.0f;
         for (int k = 0; k < count; ++k)
-            reach = std::max(reach, apexes[k].c * (m - apexes[k].b.h));
-        return bound(o, reach);
+            r = std::max(r, apexes[k].c * (m - apexes[k].b.h));
+        return r;
     }
 
     // The offsets (texels) from the apexes of `box` to the cells of node n, far corners included.
@@ -257,10 +280,10 @@ private:
     // first (not one of the 3x3 already done, can fall in these directions, plain bound below c,
     // falls away from the apex), then relaxedCell() on the corners already read.
     template <typename State>
-    void visitCell(const Cell& cell, int ox, int oy, std::uint8_t sectors, State& s) const {
+    void visitCell(const Cell& cell, int ox, int oy, Sectors sectors, State& s) const {
         if ((ox >= -1 && ox <= 1 && oy >= -1 && oy <= 1) || beyondPeriod(g, ox, oy))
             return;
-        const std::uint8_t falls = cell.falls & sectors;
+        const Sectors falls = cell.falls & sectors;
         if (!falls)
             return;
         const Corners& k = cell.k;
