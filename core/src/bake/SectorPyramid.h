@@ -51,6 +51,18 @@ public:
         return decode(m_any[level][static_cast<std::size_t>(y) * m_width[level] + x]);
     }
 
+    // Starts loading the maxima of nodes (x, y) .. (x + 1, y + 1) of a level, which a search
+    // reads next.
+    void prefetch(int level, int x, int y) const {
+        const std::size_t row = m_width[level], at = static_cast<std::size_t>(y) * row + x;
+        __builtin_prefetch(&m_any[level][at]);
+        __builtin_prefetch(&m_levels[level][at * kSectors]);
+        if (y + 1 < m_height[level]) {
+            __builtin_prefetch(&m_any[level][at + row]);
+            __builtin_prefetch(&m_levels[level][(at + row) * kSectors]);
+        }
+    }
+
 private:
     // A stored 0 is a cell of height 0 or none: neither rises above any apex.
     float decode(unsigned stored) const {
