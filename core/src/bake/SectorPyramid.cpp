@@ -7,51 +7,25 @@
 
 namespace px::cone {
 
-ArcTable::ArcTable() {
-    for (int m = 1; m < 256; ++m) {
-        int bestGap = -1, bestStart = 0;
-        for (int s = 0; s < 8; ++s) {
-            if (!((m >> s) & 1) || ((m >> ((s + 7) & 7)) & 1))
-                continue; // not the first sector of a run
-            int gap = 0;
-            for (int k = (s + 7) & 7; !((m >> k) & 1) && gap < 8; k = (k + 7) & 7)
-                ++gap;
-            if (gap > bestGap) {
-                bestGap = gap;
-                bestStart = s;
-            }
-        }
-        std::uint8_t arc = 0;
-        for (int i = 0; i < 8 - bestGap; ++i)
-            arc |= std::uint8_t(1u << ((bestStart + i) & 7));
-        fill[m] = bestGap < 0 ? 0xff : arc;
-    }
-}
-
-const ArcTable kArcs;
-
 namespace {
 
-// Whether g . e < 0 for an edge direction e of sector k's boundary at angle 45 j degrees.
-bool fallsAlong(double gx, double gy, int j) {
-    switch (j & 7) {
-    case 0:
-        return gx < 0;
-    case 1:
-        return gx + gy < 0;
-    case 2:
-        return gy < 0;
-    case 3:
-        return gy - gx < 0;
-    case 4:
-        return -gx < 0;
-    case 5:
-        return -gx - gy < 0;
-    case 6:
-        return -gy < 0;
-    default:
-        return gx - gy < 0;
+// The sectors' edge directions in uv (edge k starts sector k), counterclockwise from +u.
+constexpr int kEdges[kSectors][2] = {{1, 0},  {2, 1},  {1, 1},  {1, 2},   {0, 1},   {-1, 2},
+                                     {-1, 1}, {-2, 1}, {-1, 0}, {-2, -1}, {-1, -1}, {-1, -2},
+                                     {0, -1}, {1, -2}, {1, -1}, {2, -1}};
+
+// The sectors along which a cell whose gradient (per uv) lies in the box [gx0, gx1] x [gy0, gy1]
+// can fall: g . e < 0 for some g of the box and e of the sector, and g . e is smallest at an
+// edge direction e and at a corner of the box.
+Sectors fallingSectors(double gx0, double gx1, double gy0, double gy1) {
+    unsigned edges = 0; // bit k: the surface falls along edge k somewhere in the cell
+    for (int k = 0; k < kSectors; ++k) {
+        const int ex = kEdges[k][0], ey = kEdges[k][1];
+        if ((ex < 0 ? gx1 : gx0) * ex + (ey < 0 ? gy1 : gy0) * ey < 0)
+            edges |= 1u << k;
     }
+    // Sector k is bounded by edges k and k + 1.
+    return static_cast<Sectors>(edges | edges >> 1 | edges << (kSectors - 1));
 }
 
 } // namespace
@@ -73,66 +47,67 @@ SectorPyramid::SectorPyramid(const CellGrid& g, float heightMax, BakeProgress* p
                     // y between the top and bottom edges' slopes, d h / d y in x likewise.
                     const double sx[2] = {W * (double(k.h10) - k.h00), W * (double(k.h11) - k.h01)};
                     const double sy[2] = {H * (double(k.h01) - k.h00), H * (double(k.h11) - k.h10)};
-                    std::uint8_t bits = 0;
-                    for (int sector = 0; sector < 8; ++sector) {
-                        for (int corner = 0; corner < 4 && !((bits >> sector) & 1); ++corner) {
-                            const double gx = sx[corner & 1], gy = sy[corner >> 1];
-                            if (fallsAlong(gx, gy, sector) || fallsAlong(gx, gy, sector + 1))
-                                bits |= std::uint8_t(1u << sector);
-                        }
-                    }
-                    m_flags[static_cast<std::size_t>(y) * g.cellsX + x] = bits;
+                    m_flags[static_cast<std::size_t>(y) * g.cellsX + x] =
+                        fallingSectors(std::min(sx[0], sx[1]), std::max(sx[0], sx[1]),
+                                       std::min(sy[0], sy[1]), std::max(sy[0], sy[1]));
                 }
                 if (progress)
                     progress->advance(1);
             }
         });
     m_levels.emplace_back();
+    m_any.emplace_back();
     auto stopped = [progress] { return progress && progress->stopRequested(); };
     while ((m_width.back() > 1 || m_height.back() > 1) && !stopped()) {
         const int child = static_cast<int>(m_width.size()) - 1;
         const int cw = m_width.back(), ch = m_height.back();
         const int w = (cw + 1) / 2, h = (ch + 1) / 2;
-        std::vector<std::uint16_t> values(static_cast<std::size_t>(w) * h * 8, 0);
-        tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>&
-                                                                    rows) {
-            for (int y = rows.begin(); y < rows.end(); ++y) {
-                if (stopped())
-                    return;
-                for (int x = 0; x < w; ++x) {
-                    std::uint16_t* out = &values[(static_cast<std::size_t>(y) * w + x) * 8];
-                    for (int j = 0; j < 2; ++j) {
-                        for (int i = 0; i < 2; ++i) {
-                            const int cx = 2 * x + i, cy = 2 * y + j;
-                            if (cx >= cw || cy >= ch)
-                                continue;
-                            if (child == 0) {
-                                const std::uint8_t bits = falls(cx, cy);
-                                if (!bits)
+        std::vector<std::uint16_t> values(static_cast<std::size_t>(w) * h * kSectors, 0);
+        std::vector<std::uint16_t> any(static_cast<std::size_t>(w) * h, 0);
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
+                for (int y = rows.begin(); y < rows.end(); ++y) {
+                    if (stopped())
+                        return;
+                    for (int x = 0; x < w; ++x) {
+                        std::uint16_t* out =
+                            &values[(static_cast<std::size_t>(y) * w + x) * kSectors];
+                        for (int j = 0; j < 2; ++j) {
+                            for (int i = 0; i < 2; ++i) {
+                                const int cx = 2 * x + i, cy = 2 * y + j;
+                                if (cx >= cw || cy >= ch)
                                     continue;
-                                // Round up: the stored value must bound the cell's maximum.
-                                const float m = cellCorners(g, cx, cy).max();
-                                auto q = static_cast<std::uint16_t>(
-                                    m_scale > 0.0f ? std::min(65535.0f, std::ceil(m / m_scale))
-                                                   : 0.0f);
-                                while (q < 65535 && q * m_scale < m)
-                                    ++q;
-                                for (int s = 0; s < 8; ++s) {
-                                    if ((bits >> s) & 1)
-                                        out[s] = std::max(out[s], q);
+                                if (child == 0) {
+                                    const Sectors bits = falls(cx, cy);
+                                    if (!bits)
+                                        continue;
+                                    // Round up: the stored value must bound the cell's maximum.
+                                    const float m = cellCorners(g, cx, cy).max();
+                                    auto q = static_cast<std::uint16_t>(
+                                        m_scale > 0.0f ? std::min(65535.0f, std::ceil(m / m_scale))
+                                                       : 0.0f);
+                                    while (q < 65535 && q * m_scale < m)
+                                        ++q;
+                                    for (int s = 0; s < kSectors; ++s) {
+                                        if ((bits >> s) & 1)
+                                            out[s] = std::max(out[s], q);
+                                    }
+                                } else {
+                                    const std::uint16_t* in =
+                                        &m_levels[child][(static_cast<std::size_t>(cy) * cw + cx) *
+                                                         kSectors];
+                                    for (int s = 0; s < kSectors; ++s)
+                                        out[s] = std::max(out[s], in[s]);
                                 }
-                            } else {
-                                const std::uint16_t* in =
-                                    &m_levels[child][(static_cast<std::size_t>(cy) * cw + cx) * 8];
-                                for (int s = 0; s < 8; ++s)
-                                    out[s] = std::max(out[s], in[s]);
                             }
                         }
+                        any[static_cast<std::size_t>(y) * w + x] =
+                            *std::max_element(out, out + kSectors);
                     }
                 }
-            }
-        });
+            });
         m_levels.push_back(std::move(values));
+        m_any.push_back(std::move(any));
         m_width.push_back(w);
         m_height.push_back(h);
     }
