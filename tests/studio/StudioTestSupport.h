@@ -47,9 +47,11 @@ inline std::unique_ptr<MainWindow> makeWindow(int layout = 1, int size = 64,
     return window;
 }
 
-// Waits until the preview has drawn a frame after now and measured its view.
+// Waits until the preview has drawn a frame after now and measured its view. It asks for that
+// frame: a view already drawn and measured (while another view was waited for) draws no more.
 inline bool waitForFigures(PreviewWidget* preview, int timeoutMs = 30000) {
     const int frames = preview->framesRendered();
+    preview->update();
     return QTest::qWaitFor(
         [&] { return preview->framesRendered() > frames && preview->stats().valid; }, timeoutMs);
 }
