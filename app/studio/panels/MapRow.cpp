@@ -19,28 +19,40 @@ namespace {
 constexpr int kThumbnail = 40; // logical pixels; drawn at the screen's pixel ratio
 int g_thumbnails = 0;
 
-// The texels of `kind`'s map, as a weak handle (SharedTexels::identity).
-std::weak_ptr<const void> texelsOf(const MaterialAssets& a, MapKind kind) {
+// Calls `f` with `kind`'s map in `a` (an Image, a HeightField or a ConeMap).
+template <class F> auto withMap(const MaterialAssets& a, MapKind kind, F&& f) {
     switch (kind) {
     case MapKind::Albedo:
-        return a.albedo.pixels.identity();
+        return f(a.albedo);
     case MapKind::Height:
-        return a.height.texels.identity();
+        return f(a.height);
     case MapKind::Normal:
-        return a.normal.pixels.identity();
+        return f(a.normal);
     case MapKind::Cone:
-        return a.cone.sqrtRatio.identity();
+        return f(a.cone);
     case MapKind::RelaxedCone:
-        return a.relaxedCone.sqrtRatio.identity();
+        return f(a.relaxedCone);
     case MapKind::Ao:
-        return a.ao.pixels.identity();
+        return f(a.ao);
     case MapKind::Roughness:
-        return a.roughness.pixels.identity();
+        return f(a.roughness);
     case MapKind::Metallic:
-        return a.metallic.pixels.identity();
+        return f(a.metallic);
     }
-    return {};
+    return f(a.albedo); // not reached: every kind is named above
 }
+
+// The texels of a map, as a weak handle (SharedTexels::identity).
+std::weak_ptr<const void> texelsOf(const Image& m) {
+    return m.pixels.identity();
+}
+std::weak_ptr<const void> texelsOf(const HeightField& m) {
+    return m.texels.identity();
+}
+std::weak_ptr<const void> texelsOf(const ConeMap& m) {
+    return m.sqrtRatio.identity();
+}
+
 } // namespace
 
 MapRow::MapRow(MapKind kind, bool bakeable, QWidget* parent) : QWidget(parent), m_kind(kind) {
@@ -138,39 +150,15 @@ void MapRow::refresh(const DocumentState& state) {
                              : devicePixelRatioF();
     const int side = static_cast<int>(kThumbnail * ratio);
     const MaterialAssets& a = *state.assets;
-    const std::weak_ptr<const void> texels = texelsOf(a, m_kind);
+    const std::weak_ptr<const void> texels =
+        withMap(a, m_kind, [](const auto& map) { return texelsOf(map); });
     const std::owner_less<std::weak_ptr<const void>> before;
     if (side == m_shownSide && !before(texels, m_shownTexels) && !before(m_shownTexels, texels))
         return;
     m_shownTexels = texels;
     m_shownSide = side;
-    QImage image;
-    switch (m_kind) {
-    case MapKind::Albedo:
-        image = toQImage(a.albedo, side);
-        break;
-    case MapKind::Height:
-        image = toQImage(a.height, side);
-        break;
-    case MapKind::Normal:
-        image = toQImage(a.normal, side);
-        break;
-    case MapKind::Cone:
-        image = toQImage(a.cone, side);
-        break;
-    case MapKind::RelaxedCone:
-        image = toQImage(a.relaxedCone, side);
-        break;
-    case MapKind::Ao:
-        image = toQImage(a.ao, side);
-        break;
-    case MapKind::Roughness:
-        image = toQImage(a.roughness, side);
-        break;
-    case MapKind::Metallic:
-        image = toQImage(a.metallic, side);
-        break;
-    }
+    const QImage image =
+        withMap(a, m_kind, [side](const auto& map) { return toQImage(map, side); });
     if (image.isNull()) {
         m_thumbnail->clear();
         return;
