@@ -330,6 +330,16 @@ private slots:
         QCOMPARE(thisThreadsNice(), gui);
     }
 
+    // The built-in sample is 16-bit, as most artists' maps are: loading one keeps the height
+    // texture's format, so llvmpipe has no shader variant to compile at the first frame.
+    void theSampleGoesUpAsR16() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        QVERIFY(preview->gpuMaterial() && preview->gpuMaterial()->heightIs16Bit());
+    }
+
     void viewportsTraceDifferentTechniques() {
         auto w = makeWindow(2);
         QVERIFY(w);

@@ -3,6 +3,7 @@
 #include "parallax/sample/ProceduralAlbedo.h"
 
 #include <array>
+#include <cmath>
 #include <string>
 
 namespace px::studio {
@@ -31,6 +32,11 @@ DocumentState makeSampleState(ProceduralMap kind, int size) {
 
     auto assets = std::make_shared<MaterialAssets>();
     assets->height = makeProceduralMap(kind, size, size);
+    // On the 16-bit grid, as most artists' maps are: the preview's textures then keep their
+    // format when one is loaded, and llvmpipe, which compiles a shader variant per texture format
+    // at its first draw, has none to compile (about 0.1 s a program, measured).
+    for (float& h : assets->height.texels)
+        h = std::nearbyint(h * 65535.0f) / 65535.0f;
     assets->albedo = makeProceduralAlbedo(kind, assets->height, 1, m.wrap);
     state.assets = std::move(assets);
     state.setUnsaved(MapKind::Height, true);
