@@ -601,8 +601,8 @@ void RendererTest::bigMapsUploadInBandsExactly() {
     bad = mismatch(
         rg, 2, 1, [&](std::size_t i) { return cones.sqrtRatio[i]; }, 0.0f);
     QVERIFY2(bad.isEmpty(), qPrintable("cone map G: " + bad));
-    // RG16 (three bands): the cones as rounded, to a float's last bit below 1 (llvmpipe's unorm
-    // read is k times 1 / 65535, not k / 65535, for some k).
+    // RG16 (three bands): the cones as rounded, to a float's last bit below 1 (llvmpipe reads k
+    // as k * (1 / 65535), one ulp under k / 65535 for some k), and never wider.
     const std::vector<float> rg16 = readBack(*cone16, w, h, 2);
     bad = mismatch(
         rg16, 2, 0, [&](std::size_t i) { return field.texels[i]; }, 0.5f / 65535.0f);
@@ -610,6 +610,9 @@ void RendererTest::bigMapsUploadInBandsExactly() {
     bad = mismatch(
         rg16, 2, 1, [&](std::size_t i) { return cones16.sqrtRatio[i]; }, 0x1p-24f);
     QVERIFY2(bad.isEmpty(), qPrintable("RG16 cone map G: " + bad));
+    for (std::size_t i = 0; i < cones16.sqrtRatio.size(); ++i)
+        QVERIFY2(rg16[i * 2 + 1] <= cones16.sqrtRatio[i],
+                 qPrintable(QString("texel %1: a cone read back wider than baked").arg(i)));
     // The albedo is linear on the GPU (half floats: 1e-3 relative).
     const std::vector<float> rgba = readBack(*colour, w, h, 4);
     for (int c = 0; c < 3; ++c) {

@@ -140,8 +140,8 @@ bool fitsR16(const HeightField& field) {
 }
 
 bool fitsRG16(const ConeMap& cones) {
-    // Exactly k / 65535, as the bakers' 16-bit rounding and the GL's read of RG16 give it: a cone
-    // read back wider than baked would let rays through.
+    // Exactly k / 65535, as the bakers' 16-bit rounding gives it: RG16 then stores k, and the GL
+    // reads it back as k / 65535 or an ulp under (never wider, which would let rays through).
     for (float g : cones.sqrtRatio) {
         if (!(g >= 0.0f && g <= 1.0f) || std::nearbyint(g * 65535.0f) / 65535.0f != g)
             return false;
