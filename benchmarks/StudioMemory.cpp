@@ -52,16 +52,21 @@ bool restartPeak() {
     return static_cast<bool>(clear);
 }
 
-// The longest gap between ticks of a 10 ms timer while `until` is false.
+// The longest gap between ticks of a 10 ms timer while `until` is false; with `reportMs` > 0,
+// every gap that long is printed with the time it ended (QElapsedTimer's monotonic clock).
 struct StallWatch {
     QElapsedTimer clock;
     qint64 last = 0, longest = 0;
     QTimer timer;
-    StallWatch() {
+    explicit StallWatch(qint64 reportMs) {
         timer.setInterval(10);
-        QObject::connect(&timer, &QTimer::timeout, [this] {
+        QObject::connect(&timer, &QTimer::timeout, [this, reportMs] {
             const qint64 now = clock.elapsed();
             longest = std::max(longest, now - last);
+            if (reportMs > 0 && now - last >= reportMs)
+                std::fprintf(stderr, "gap: %lld ms, ended at monotonic %.3f\n",
+                             static_cast<long long>(now - last),
+                             (clock.msecsSinceReference() + now) / 1000.0);
             last = now;
         });
         clock.start();
@@ -75,19 +80,22 @@ class TracingApplication : public QApplication {
 public:
     using QApplication::QApplication;
     qint64 slowMs = 0;
+    QElapsedTimer since; // started in main
     bool notify(QObject* receiver, QEvent* event) override {
         if (slowMs <= 0)
             return QApplication::notify(receiver, event);
+        // Named before the event: its handling may delete the receiver.
         const int type = event->type();
-        QElapsedTimer clock;
-        clock.start();
+        const QObject* parent = receiver->parent();
+        const QByteArray name = QByteArray(receiver->metaObject()->className()) + " '" +
+                                receiver->objectName().toUtf8() + "' (parent " +
+                                (parent ? parent->metaObject()->className() : "-") + ")";
+        const qint64 start = since.elapsed();
         const bool handled = QApplication::notify(receiver, event);
-        if (const qint64 ms = clock.elapsed(); ms >= slowMs) {
-            const QObject* parent = receiver->parent();
-            std::fprintf(stderr, "slow event: %lld ms, type %d, %s (parent %s)\n",
-                         static_cast<long long>(ms), type, receiver->metaObject()->className(),
-                         parent ? parent->metaObject()->className() : "-");
-        }
+        if (const qint64 ms = since.elapsed() - start; ms >= slowMs)
+            std::fprintf(stderr, "slow event at %.3f s (monotonic %.3f): %lld ms, type %d, %s\n",
+                         start / 1000.0, (since.msecsSinceReference() + start) / 1000.0,
+                         static_cast<long long>(ms), type, name.constData());
         return handled;
     }
 };
@@ -139,6 +147,11 @@ int main(int argc, char** argv) {
         else if (flag == "--slow-events")
             app.slowMs = std::atoi(argv[i + 1]);
     }
+    app.since.start();
+    auto mark = [&app](const char* phase) {
+        if (app.slowMs > 0)
+            std::fprintf(stderr, "-- %s at %.3f s\n", phase, app.since.elapsed() / 1000.0);
+    };
     if (size < 16 || views < 1 || views > 4) {
         std::fprintf(stderr, "usage: parallax-bench-studio-memory [--size N>=16] [--views 1..4] "
                              "[--slow-events MS]\n");
@@ -177,7 +190,8 @@ int main(int argc, char** argv) {
                              "the peaks include the map's generation\n");
     const double before = statusMiB("VmHWM");
 
-    StallWatch loadWatch;
+    mark("load");
+    StallWatch loadWatch(app.slowMs);
     QElapsedTimer clock;
     clock.start();
     if (!window.loadMap(MapKind::Height, QString::fromStdString(file)) ||
@@ -190,7 +204,8 @@ int main(int argc, char** argv) {
     const double afterLoad = statusMiB("VmHWM");
     const double residentLoad = statusMiB("VmRSS");
 
-    StallWatch bakeWatch;
+    mark("bake");
+    StallWatch bakeWatch(app.slowMs);
     clock.restart();
     window.startBake(BakeKind::Cone);
     if (!waitUntil([&] { return !window.baker()->isBusy(); }, 3600000) ||
@@ -203,6 +218,7 @@ int main(int argc, char** argv) {
     const double residentBake = statusMiB("VmRSS");
     restartPeak();
     // What the bake was for: the last view traces `cone`, so its map is on the GPU too.
+    mark("cone view");
     window.document()->edit("cone", [views](DocumentState& s) {
         s.setView(views - 1, {Technique::Cone, info(Technique::Cone).defaults});
     });
@@ -211,6 +227,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "parallax-bench-studio-memory: the cone view did not draw\n");
         return 1;
     }
+    mark("end");
     const double bakeSeconds = clock.elapsed() / 1000.0;
     const qint64 bakeStall = bakeWatch.longest;
     const double afterBake = std::max(bakePeak, statusMiB("VmHWM"));

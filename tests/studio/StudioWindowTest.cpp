@@ -17,6 +17,7 @@
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/render/GpuMaterial.h"
+#include "preview/FramePacer.h"
 #include "preview/PreviewRenderer.h"
 #include "widgets/SliderField.h"
 #include "widgets/TechniqueCombo.h"
@@ -217,6 +218,45 @@ private slots:
 
     // The figures take two extra passes (at 8192² 0.2-0.4 s on llvmpipe): drawn a slice per
     // event-loop turn, with the same result as in one go; a scene change mid-way starts over.
+    void dearFramesAreDrawnOverSeveralTurns() {
+        // A frame over the pacer's budget (FramePacer.h) is drawn a few bands a turn of the event
+        // loop and counts once whole; it is the same picture as a frame drawn at once.
+        auto w = makeWindow(1);
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+
+        FramePacer::setBudgetMs(3.0);
+        const auto restore = qScopeGuard([] { FramePacer::setBudgetMs(30.0); });
+        struct PaintCounter : QObject {
+            int paints = 0;
+            bool eventFilter(QObject*, QEvent* e) override {
+                paints += e->type() == QEvent::Paint ? 1 : 0;
+                return false;
+            }
+        } counter;
+        preview->installEventFilter(&counter);
+        int frames = preview->framesRendered();
+        preview->setScene(preview->scene()); // a new frame of the same picture
+        QVERIFY(waitForFrame(preview, frames));
+        QCOMPARE(preview->framesRendered(), frames + 1);
+        QVERIFY2(counter.paints >= 4, qPrintable(QString::number(counter.paints)));
+        preview->removeEventFilter(&counter);
+        // The same picture as drawn at once, offscreen at the same size.
+        const QImage inBands = preview->grabFramebuffer();
+        Result<Image> atOnce = preview->renderImage(preview->scene(), inBands.size());
+        QVERIFY(atOnce);
+        int differing = 0;
+        for (int y = 0; y < inBands.height(); ++y)
+            for (int x = 0; x < inBands.width(); ++x) {
+                const QRgb c = inBands.pixel(x, y);
+                const int rgb[3] = {qRed(c), qGreen(c), qBlue(c)};
+                for (int k = 0; k < 3; ++k)
+                    differing += std::abs(std::lround(atOnce->at(x, y, k) * 255.0f) - rgb[k]) > 1;
+            }
+        QCOMPARE(differing, 0);
+    }
+
     void figuresAreMeasuredInSlices() {
         auto w = makeWindow(1);
         QVERIFY(w);

@@ -1,5 +1,6 @@
 #include "jobs/MapUpload.h"
 
+#include "jobs/BackgroundPriority.h"
 #include "jobs/SharedGlContext.h"
 #include "parallax/render/GpuMaterial.h" // parallax-render
 
@@ -78,6 +79,9 @@ MapUpload::MapUpload(std::shared_ptr<const MaterialAssets> assets, WrapMode wrap
                                                  techniques = m_techniques,
                                                  handover = m_handover]() mutable {
         waitWhileHeld();
+        // Below the GUI thread, as bakes are; the context's driver threads (llvmpipe's), made
+        // next on this thread, inherit it.
+        lowerThisThreadsPriority();
         auto made = std::make_shared<Made>();
         Result<std::shared_ptr<QOpenGLContext>> context = sharedViewportContext(surface);
         if (!context) {

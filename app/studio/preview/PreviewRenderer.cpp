@@ -277,54 +277,109 @@ Result<std::unique_ptr<PreviewRenderer>> PreviewRenderer::create() {
     return preview;
 }
 
-Result<double> PreviewRenderer::draw(const PreviewScene& scene, QSize pixels, unsigned fbo) {
+// What a frame of `scene` shows: the background alone, or the scene (its maps synced).
+Result<bool> PreviewRenderer::prepare(const PreviewScene& scene) {
     Impl& d = *m_impl;
-    const auto start = std::chrono::steady_clock::now();
-    QOpenGLFunctions* f = gl();
-    f->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    const glm::ivec2 size(pixels.width(), pixels.height());
-    if (!scene.traceable || !scene.assets) {
-        f->glViewport(0, 0, size.x, size.y);
-        f->glClearColor(kBackground.r, kBackground.g, kBackground.b, 1.0f);
-        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        return 0.0;
-    }
+    if (!scene.traceable || !scene.assets)
+        return false;
     if (Status s = d.sync(scene); !s)
         return s.error();
     if (Status s = d.syncEnvironment(scene); !s)
         return s.error();
-    if (d.uploading() && !d.canDrawMeanwhile(scene)) {
-        f->glViewport(0, 0, size.x, size.y);
-        f->glClearColor(kBackground.r, kBackground.g, kBackground.b, 1.0f);
-        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        return 0.0;
-    }
+    return !d.uploading() || d.canDrawMeanwhile(scene);
+}
+
+Status PreviewRenderer::drawScene(const PreviewScene& scene, glm::ivec2 size, QRect rows) {
+    Impl& d = *m_impl;
+    QOpenGLFunctions* f = gl();
+    // GL counts rows from the bottom.
+    auto clip = [&](int x0, int x1) {
+        const QRect r = rows.isEmpty() ? QRect(0, 0, size.x, size.y) : rows;
+        f->glEnable(GL_SCISSOR_TEST);
+        f->glScissor(x0, size.y - r.y() - r.height(), x1 - x0, r.height());
+    };
     const DrawOptions options = d.options(scene);
-    if (Status s = d.renderer->draw(*d.gpu, scene.material, scene.view.camera, scene.view.light,
-                                    options, size);
-        !s)
-        return s.error();
+    if (!rows.isEmpty())
+        clip(0, size.x);
+    Status s = d.renderer->draw(*d.gpu, scene.material, scene.view.camera, scene.view.light,
+                                options, size);
+    f->glDisable(GL_SCISSOR_TEST);
+    if (!s)
+        return s;
     d.lastKey = d.renderer->variantFor(*d.gpu, scene.material, options);
     if (scene.overlays.wipe) {
         // B on the right of the divider: the same view again, scissored.
         Material b = scene.material;
         b.technique = scene.overlays.wipeTechnique;
         b.params = info(b.technique).defaults;
-        const int x = static_cast<int>(scene.overlays.wipePosition * size.x);
-        f->glEnable(GL_SCISSOR_TEST);
-        f->glScissor(x, 0, size.x - x, size.y);
-        const Status s =
-            d.renderer->draw(*d.gpu, b, scene.view.camera, scene.view.light, options, size);
+        clip(static_cast<int>(scene.overlays.wipePosition * size.x), size.x);
+        s = d.renderer->draw(*d.gpu, b, scene.view.camera, scene.view.light, options, size);
         f->glDisable(GL_SCISSOR_TEST);
-        if (!s)
-            return s.error();
     }
     // QPainter draws the overlays next, on the depth the mesh left: hand it a neutral state.
     f->glDisable(GL_DEPTH_TEST);
     f->glDisable(GL_CULL_FACE);
-    f->glFinish();
+    return s;
+}
+
+namespace {
+void clearToBackground(glm::ivec2 size) {
+    QOpenGLFunctions* f = gl();
+    f->glViewport(0, 0, size.x, size.y);
+    f->glClearColor(kBackground.r, kBackground.g, kBackground.b, 1.0f);
+    f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+} // namespace
+
+Result<double> PreviewRenderer::draw(const PreviewScene& scene, QSize pixels, unsigned fbo) {
+    const auto start = std::chrono::steady_clock::now();
+    gl()->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    const glm::ivec2 size(pixels.width(), pixels.height());
+    Result<bool> shows = prepare(scene);
+    if (!shows)
+        return shows.error();
+    if (!*shows) {
+        clearToBackground(size);
+        return 0.0;
+    }
+    if (Status s = drawScene(scene, size, QRect()); !s)
+        return s.error();
+    gl()->glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
+}
+
+Result<FramePacer::Step> PreviewRenderer::drawStep(const PreviewScene& scene, std::uint64_t serial,
+                                                   QSize pixels, unsigned fbo, double budgetMs) {
+    const glm::ivec2 size(std::max(1, pixels.width()), std::max(1, pixels.height()));
+    Result<bool> shows = prepare(scene);
+    if (!shows)
+        return shows.error();
+    if (!*shows) {
+        gl()->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        clearToBackground(size);
+        m_pacer.forget(); // the maps drawn next cost what they cost
+        return FramePacer::Step{true, 0.0, 0, false};
+    }
+    // What the cost per pixel depends on beyond the camera and the sliders.
+    const Impl& d = *m_impl;
+    std::uint64_t key = 1469598103934665603ull;
+    auto mix = [&key](std::uint64_t v) { key = (key ^ v) * 1099511628211ull; };
+    mix(static_cast<std::uint64_t>(scene.material.technique));
+    mix(scene.overlays.wipe ? 1 + static_cast<std::uint64_t>(scene.overlays.wipeTechnique) : 0);
+    mix(reinterpret_cast<std::uintptr_t>(d.gpu));
+    mix(static_cast<std::uint64_t>(scene.view.mesh));
+    mix(reinterpret_cast<std::uintptr_t>(scene.view.meshData.get()));
+    mix(scene.view.showEnvironment ? 1 : 0);
+    mix((std::uint64_t(size.x) << 32) | std::uint64_t(size.y));
+    Result<FramePacer::Step> step =
+        m_pacer.step(serial, key, size, fbo, budgetMs,
+                     [&](glm::ivec2 at, QRect rows) { return drawScene(scene, at, rows); });
+    // A step may draw nothing (the frame is whole): QPainter still needs the neutral state the
+    // measurement's passes do not leave.
+    gl()->glDisable(GL_DEPTH_TEST);
+    gl()->glDisable(GL_CULL_FACE);
+    return step;
 }
 
 Status PreviewRenderer::beginMeasure(const PreviewScene& scene, QSize pixels, double frameMs) {
@@ -417,6 +472,10 @@ bool PreviewRenderer::measuring() const {
 
 bool PreviewRenderer::uploading() const {
     return m_impl->uploading();
+}
+
+bool PreviewRenderer::mapsArrived() const {
+    return m_impl->pending && m_impl->pending->finished();
 }
 
 void PreviewRenderer::waitForMaps() {

@@ -5,6 +5,7 @@
 // Every call needs the preview's GL context current.
 
 #include "parallax/Result.h"
+#include "preview/FramePacer.h"
 #include "preview/PreviewScene.h"
 
 #include <QImage>
@@ -28,6 +29,11 @@ public:
     // Draws into framebuffer `fbo` of `pixels` device pixels; returns the frame time in ms
     // (steady clock around the draw and glFinish).
     Result<double> draw(const PreviewScene& scene, QSize pixels, unsigned fbo);
+    // A turn of the event loop's share of the frame of `scene` (FramePacer.h): drawn in bands
+    // into the view's own target and shown in `fbo` once whole, a smaller picture meanwhile.
+    // `serial` changes whenever the scene or the size does; a `budgetMs` of 0 draws nothing.
+    Result<FramePacer::Step> drawStep(const PreviewScene& scene, std::uint64_t serial, QSize pixels,
+                                      unsigned fbo, double budgetMs);
     // Fetches per pixel and the error against `exact`, rendered at the view's own resolution (the
     // marching techniques' height level follows each pixel's footprint): over every pixel when
     // the heat map is on (and makes it), else over a stratified sample of boxes of the view.
@@ -47,15 +53,19 @@ public:
     // Big maps go up on a worker (jobs/MapUpload.h): meanwhile draw() shows the maps there are
     // (or the background, where they cannot stand in) and measure() measures nothing.
     bool uploading() const;
-    void waitForMaps(); // blocks until the worker is done (then draw again)
+    bool mapsArrived() const; // the worker is done: the next frame draws the scene's maps
+    void waitForMaps();       // blocks until the worker is done (then draw again)
     // Uploads of more texels than this go to the worker (4096² by default; tests lower it).
     static void setBackgroundUploadTexels(std::size_t texels);
 
 private:
     PreviewRenderer() = default;
+    Result<bool> prepare(const PreviewScene& scene);
+    Status drawScene(const PreviewScene& scene, glm::ivec2 size, QRect rows);
     struct Impl;
     std::unique_ptr<Impl> m_impl;
     QImage m_heatMap;
+    FramePacer m_pacer;
 };
 
 } // namespace px::studio

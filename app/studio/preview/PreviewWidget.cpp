@@ -21,6 +21,8 @@ namespace {
 constexpr double kWipeGrab = 8.0;
 // A slice of the measurement's drawing between two turns of the event loop.
 double g_measureSliceMs = 30.0;
+// A frame's drawing waits this long after the paint event of its last step (FramePacer.h).
+constexpr qint64 kBreathMs = 10;
 } // namespace
 
 void PreviewWidget::setMeasureSliceMs(double ms) {
@@ -40,6 +42,20 @@ PreviewWidget::PreviewWidget(QWidget* parent) : QOpenGLWidget(parent) {
     m_sliceTimer->setSingleShot(true);
     m_sliceTimer->setInterval(0);
     connect(m_sliceTimer, &QTimer::timeout, this, &PreviewWidget::measureSlice);
+    m_continueFrame = new QTimer(this);
+    m_continueFrame->setSingleShot(true);
+    m_continueFrame->setInterval(kBreathMs);
+    m_continueFrame->setTimerType(Qt::PreciseTimer); // not early: it would only breathe again
+    connect(m_continueFrame, &QTimer::timeout, this, qOverload<>(&PreviewWidget::update));
+    // While the maps go up on a worker the view keeps its picture; it draws again when they land.
+    m_uploadPoll = new QTimer(this);
+    m_uploadPoll->setInterval(50);
+    connect(m_uploadPoll, &QTimer::timeout, this, [this] {
+        if (!m_renderer || !m_renderer->uploading() || m_renderer->mapsArrived()) {
+            m_uploadPoll->stop();
+            update();
+        }
+    });
 }
 
 PreviewWidget::~PreviewWidget() {
@@ -60,6 +76,7 @@ void PreviewWidget::releaseGl() {
 
 void PreviewWidget::setScene(const PreviewScene& scene) {
     m_scene = scene;
+    ++m_sceneSerial;
     dropMeasurement();
     m_stats.valid = false;
     m_measureTimer->start();
@@ -74,9 +91,8 @@ void PreviewWidget::dropMeasurement() {
 }
 
 void PreviewWidget::measure() {
-    if (!m_renderer || !isVisible()) {
-        return;
-    }
+    if (!m_renderer || !isVisible() || !m_frameComplete)
+        return; // paintGL asks again once the frame is whole
     makeCurrent();
     const Status begun =
         m_renderer->beginMeasure(m_scene, size() * devicePixelRatioF(), m_stats.frameMs);
@@ -163,6 +179,7 @@ void PreviewWidget::initializeGL() {
 }
 
 void PreviewWidget::resizeGL(int, int) {
+    ++m_sceneSerial;
     dropMeasurement(); // measured again at the new size
 }
 
@@ -171,23 +188,50 @@ void PreviewWidget::paintGL() {
     // The renderer's raw GL between begin/endNativePainting, as Qt asks of mixed painting.
     QPainter painter(this);
     painter.beginNativePainting();
+    bool complete = false;
     if (m_renderer) {
-        Result<double> frameMs = m_renderer->draw(m_scene, pixels, defaultFramebufferObject());
-        if (!frameMs) {
-            m_renderError = QString::fromStdString(frameMs.error().message);
+        // A step right after one that drew (its paint event just ended) draws nothing: what
+        // came meanwhile, input, timers, is handled first.
+        const bool breathe = m_lastDrawn.isValid() && m_lastDrawn.elapsed() < kBreathMs;
+        Result<FramePacer::Step> step =
+            m_renderer->drawStep(m_scene, m_sceneSerial, pixels, defaultFramebufferObject(),
+                                 breathe ? 0.0 : FramePacer::budgetMs());
+        if (!step) {
+            m_renderError = QString::fromStdString(step.error().message);
+            complete = true;
         } else {
             m_renderError.clear();
-            m_stats.frameMs = *frameMs;
-            ++m_frames;
+            complete = step->complete;
+            if (complete) {
+                m_stats.frameMs = step->frameMs;
+                ++m_frames;
+            }
+            const bool drew = step->bands > 0 || step->standIn;
+            if (drew || !complete) {
+                // Timed from the end of this paint event, composing included: the rest of the
+                // frame after a breath.
+                QMetaObject::invokeMethod(
+                    this,
+                    [this, drew, complete] {
+                        if (drew)
+                            m_lastDrawn.start();
+                        if (!complete)
+                            m_continueFrame->start();
+                    },
+                    Qt::QueuedConnection);
+            }
         }
         if (m_renderer->uploading()) {
-            // Drawn with the maps there were: again until the scene's are up, then measured.
+            // Drawn with the maps there were: again once the scene's are up, then measured.
             m_measured = false;
-            QTimer::singleShot(50, this, qOverload<>(&PreviewWidget::update));
-        } else if (!m_measured && !m_measureTimer->isActive() && !m_renderer->measuring()) {
+            if (!m_uploadPoll->isActive())
+                m_uploadPoll->start();
+        } else if (complete && !m_measured && !m_measureTimer->isActive() &&
+                   !m_renderer->measuring()) {
             m_measureTimer->start();
         }
     }
+    m_frameComplete = complete;
     painter.endNativePainting();
 
     const bool heatMap = m_renderer && m_scene.overlays.heatMap && m_stats.valid;
@@ -212,8 +256,10 @@ void PreviewWidget::paintGL() {
         painter.drawImage(QPointF(0, 0), overlay);
     }
     painter.end();
-    emit frameRendered();
-    emit statsChanged(); // the frame time
+    if (complete) {
+        emit frameRendered();
+        emit statsChanged(); // the frame time
+    }
 }
 
 void PreviewWidget::drawOverlays(QPainter& painter, bool heatMap, bool message) {

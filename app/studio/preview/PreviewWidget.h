@@ -8,7 +8,9 @@
 #include "parallax/image/Image.h"
 #include "preview/PreviewScene.h"
 
+#include <QElapsedTimer>
 #include <QOpenGLWidget>
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -31,7 +33,9 @@ public:
     const PreviewStats& stats() const { return m_stats; }
     // The renderer's failure, if the last frame could not be drawn (shader error, GL error).
     QString renderError() const { return m_renderError; }
-    // Frames drawn so far (tests wait for the next one).
+    // Whole frames drawn so far (tests wait for the next one). A frame that costs more than the
+    // pacer's budget (FramePacer.h) is drawn over several turns of the event loop and counts once
+    // whole.
     int framesRendered() const { return m_frames; }
     // The value a uniform of the program that drew the last frame holds (tests: sliders reach
     // the GPU). Empty when the program has no such uniform.
@@ -88,6 +92,11 @@ private:
     std::unique_ptr<PreviewRenderer> m_renderer;
     class QTimer* m_measureTimer;
     class QTimer* m_sliceTimer;
+    class QTimer* m_uploadPoll;
+    class QTimer* m_continueFrame;
+    std::uint64_t m_sceneSerial = 1; // the frame's: a new scene or size starts a new frame
+    bool m_frameComplete = false;
+    QElapsedTimer m_lastDrawn; // since the paint event of the last step that drew
     int m_measureSlices = 0;
     bool m_measured = false;
     Drag m_drag = Drag::None;
