@@ -89,7 +89,7 @@ Result<FramePacer::Step> FramePacer::step(std::uint64_t serial, std::uint64_t co
     auto drawBand = [&](int rows) -> Status {
         m_frame->bind();
         const double bandStart = nowMs();
-        const Status drawn = draw(size, QRect(0, m_rowsDone, width, rows));
+        Status drawn = draw(size, QRect(0, m_rowsDone, width, rows));
         f->glFinish(); // what the band cost
         if (!drawn)
             return drawn;
