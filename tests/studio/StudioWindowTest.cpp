@@ -225,6 +225,7 @@ private slots:
         QVERIFY(w);
         PreviewWidget* preview = w->viewports()->viewport(0)->preview();
         QVERIFY(waitForFigures(preview));
+        preview->setFixedSize(preview->size()); // its width follows its figures' text
 
         FramePacer::setBudgetMs(3.0);
         const auto restore = qScopeGuard([] { FramePacer::setBudgetMs(30.0); });
@@ -268,6 +269,8 @@ private slots:
                    a.p99Error == b.p99Error && a.maxError == b.maxError &&
                    a.otherSurface == b.otherSurface;
         };
+        // The view's width follows its figures' text: held, so both measurements see one size.
+        preview->setFixedSize(preview->size());
         preview->setScene(preview->scene()); // measured again, the window settled
         QVERIFY(waitForFigures(preview));
         const PreviewStats whole = preview->stats();
