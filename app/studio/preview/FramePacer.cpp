@@ -39,6 +39,25 @@ double FramePacer::budgetMs() {
     return g_budgetMs;
 }
 
+namespace {
+double g_turnStartMs = 0.0, g_turnSpentMs = 0.0;
+bool g_turnStarted = false;
+} // namespace
+
+double FramePacer::budgetLeftInTurn(double breathMs) {
+    const double now = nowMs();
+    if (!g_turnStarted || now - g_turnStartMs > g_turnSpentMs + breathMs) {
+        g_turnStarted = true;
+        g_turnStartMs = now;
+        g_turnSpentMs = 0.0;
+    }
+    return std::max(0.0, g_budgetMs - g_turnSpentMs);
+}
+
+void FramePacer::spentInTurn(double ms) {
+    g_turnSpentMs += ms;
+}
+
 void FramePacer::setClock(std::function<double()> nowMs) {
     g_clock = std::move(nowMs);
 }

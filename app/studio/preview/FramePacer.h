@@ -4,8 +4,8 @@
 // into its own target in bands of rows, as many as the budget allows, and shows it once every
 // band is there; meanwhile a picture of the same scene at fewer pixels, drawn first to fit the
 // budget. The cost per pixel is learnt from the bands drawn; an unknown cost (another technique,
-// other maps, another size) is first probed on the whole scene at a 64th of the pixels. On a GPU
-// every frame fits and the pacer only adds a probe per new cost and a copy a frame. Needs the
+// other maps, another size) is first probed on the whole scene at a 64th of the pixels. Where a
+// frame fits (a GPU, small maps) the pacer adds a probe per new cost and a copy a frame. Needs the
 // view's GL context current.
 
 #include "parallax/Result.h"
@@ -27,8 +27,8 @@ public:
     struct Step {
         bool complete = false; // the whole frame is shown, not the smaller stand-in
         double frameMs = 0.0;  // what the whole frame cost, its bands added up (when complete)
-        int bands = 0;         // bands drawn in this step (tests)
-        bool standIn = false;  // the smaller picture was drawn in this step (tests)
+        int bands = 0;         // bands drawn in this step
+        bool standIn = false;  // the smaller picture was drawn in this step
     };
 
     // Draws the next part of the frame of scene `serial` (a new serial starts a new frame) and
@@ -44,6 +44,11 @@ public:
     // turn stays well under 0.1 s; tests change it).
     static void setBudgetMs(double ms);
     static double budgetMs();
+    // One window update paints every view, so the views share a turn's budget: what the steps
+    // of this turn left (a turn ends `breathMs` after its last step), and a step's drawing spent.
+    static double budgetLeftInTurn(double breathMs);
+    static void spentInTurn(double ms);
+
     // The clock steps and bands are timed with, in ms (tests: a clock the draws advance). Empty:
     // the steady clock.
     static void setClock(std::function<double()> nowMs);

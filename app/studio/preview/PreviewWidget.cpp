@@ -12,7 +12,6 @@
 #include <QPainter>
 #include <QTimer>
 #include <QWheelEvent>
-#include <algorithm>
 #include <cmath>
 
 namespace px::studio {
@@ -194,20 +193,13 @@ void PreviewWidget::paintGL() {
         // A step right after one that drew (its paint event just ended) draws nothing: what
         // came meanwhile, input, timers, is handled first.
         const bool breathe = m_lastDrawn.isValid() && m_lastDrawn.elapsed() < kBreathMs;
-        // One window update paints every view: they share the turn's budget.
-        static QElapsedTimer turn;
-        static double turnSpentMs = 0.0;
-        if (!turn.isValid() || turn.elapsed() > turnSpentMs + kBreathMs) {
-            turn.start();
-            turnSpentMs = 0.0;
-        }
-        const double budget = std::max(0.0, FramePacer::budgetMs() - turnSpentMs);
+        const double budget = FramePacer::budgetLeftInTurn(kBreathMs);
         QElapsedTimer stepClock;
         stepClock.start();
         Result<FramePacer::Step> step =
             m_renderer->drawStep(m_scene, m_sceneSerial, pixels, defaultFramebufferObject(),
                                  breathe || budget < 1.0 ? 0.0 : budget);
-        turnSpentMs += static_cast<double>(stepClock.nsecsElapsed()) / 1e6;
+        FramePacer::spentInTurn(static_cast<double>(stepClock.nsecsElapsed()) / 1e6);
         if (!step) {
             m_renderError = QString::fromStdString(step.error().message);
             complete = true;
