@@ -6,6 +6,7 @@
 // previews, GL 4.3.
 //
 //   parallax-bench-studio-memory [--size N] [--views 1..4] [--slow-events MS]
+//                                [--trace-resizes on|off]
 //
 // Memory is measured here rather than in a unit test: what it reads depends on the GL driver
 // (llvmpipe keeps textures in process memory, a GPU does not).
@@ -22,6 +23,8 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QMetaEnum>
+#include <QResizeEvent>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <algorithm>
@@ -80,9 +83,14 @@ class TracingApplication : public QApplication {
 public:
     using QApplication::QApplication;
     qint64 slowMs = 0;
-    QElapsedTimer since; // started in main
+    bool traceResizes = false; // every widget's resize, to find what re-lays out the views
+    QElapsedTimer since;       // started in main
+    static QByteArray typeName(int type) {
+        const char* key = QMetaEnum::fromType<QEvent::Type>().valueToKey(type);
+        return key ? QByteArray(key) : "type " + QByteArray::number(type);
+    }
     bool notify(QObject* receiver, QEvent* event) override {
-        if (slowMs <= 0)
+        if (slowMs <= 0 && !traceResizes)
             return QApplication::notify(receiver, event);
         // Named before the event: its handling may delete the receiver.
         const int type = event->type();
@@ -91,11 +99,17 @@ public:
                                 receiver->objectName().toUtf8() + "' (parent " +
                                 (parent ? parent->metaObject()->className() : "-") + ")";
         const qint64 start = since.elapsed();
+        if (traceResizes && type == QEvent::Resize) {
+            const auto* r = static_cast<const QResizeEvent*>(event);
+            std::fprintf(stderr, "resize at %.3f s: %s %dx%d -> %dx%d\n", start / 1000.0,
+                         name.constData(), r->oldSize().width(), r->oldSize().height(),
+                         r->size().width(), r->size().height());
+        }
         const bool handled = QApplication::notify(receiver, event);
-        if (const qint64 ms = since.elapsed() - start; ms >= slowMs)
-            std::fprintf(stderr, "slow event at %.3f s (monotonic %.3f): %lld ms, type %d, %s\n",
+        if (const qint64 ms = since.elapsed() - start; slowMs > 0 && ms >= slowMs)
+            std::fprintf(stderr, "slow event at %.3f s (monotonic %.3f): %lld ms, %s, %s\n",
                          start / 1000.0, (since.msecsSinceReference() + start) / 1000.0,
-                         static_cast<long long>(ms), type, name.constData());
+                         static_cast<long long>(ms), typeName(type).constData(), name.constData());
         return handled;
     }
 };
@@ -103,10 +117,14 @@ public:
 bool waitUntil(const std::function<bool()>& done, int timeoutMs) {
     QElapsedTimer clock;
     clock.start();
+    QTimer wake; // `done` is asked again at least this often
+    wake.start(20);
     while (!done()) {
         if (clock.elapsed() > timeoutMs)
             return false;
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        // Sleeps until an event comes, as the editor's own loop does: spinning took one of the
+        // two cores from the bakes and llvmpipe.
+        QCoreApplication::processEvents(QEventLoop::AllEvents | QEventLoop::WaitForMoreEvents);
     }
     return true;
 }
@@ -146,6 +164,8 @@ int main(int argc, char** argv) {
             views = std::atoi(argv[i + 1]);
         else if (flag == "--slow-events")
             app.slowMs = std::atoi(argv[i + 1]);
+        else if (flag == "--trace-resizes")
+            app.traceResizes = std::string(argv[i + 1]) == "on";
     }
     app.since.start();
     auto mark = [&app](const char* phase) {
@@ -154,7 +174,7 @@ int main(int argc, char** argv) {
     };
     if (size < 16 || views < 1 || views > 4) {
         std::fprintf(stderr, "usage: parallax-bench-studio-memory [--size N>=16] [--views 1..4] "
-                             "[--slow-events MS]\n");
+                             "[--slow-events MS] [--trace-resizes on|off]\n");
         return 2;
     }
     const GlProbe& gl = probeOpenGl();

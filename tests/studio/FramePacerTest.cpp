@@ -1,7 +1,8 @@
 // The preview's frame pacing (preview/FramePacer.h) on a GL context, with a clock the draws
 // advance by a cost a pixel the test sets: a frame that fits is whole in one step; a dear one is
 // drawn over several steps, none over its budget, a stand-in shown meanwhile, every row once; a new
-// scene starts over; a budget of 0 draws nothing; a cost that jumps down the view is learnt.
+// scene starts over; a budget of 0 draws nothing; a cost that jumps down the view is learnt; the
+// views share a turn's budget and breathe after it.
 
 #include "preview/FramePacer.h"
 
@@ -99,6 +100,34 @@ private slots:
         FramePacer::setClock([this] { return m_scene ? m_scene->clock : 0.0; });
     }
     void cleanupTestCase() { FramePacer::setClock({}); }
+
+    // Two views' steps in one window update share the turn's budget; the turn ends after the
+    // event (composing included), and nothing is left for a breath after that, however long
+    // the event took beyond its drawing.
+    void viewsShareATurnAndBreatheAfterIt() {
+        FakeScene scene;
+        m_scene = &scene;
+        FramePacer::endTurn(); // whatever an earlier test left open
+        scene.clock += 100.0;
+        QCOMPARE(FramePacer::budgetLeftInTurn(10.0), 30.0);
+        FramePacer::spentInTurn(18.0); // the first view's step
+        scene.clock += 18.0;
+        QCOMPARE(FramePacer::budgetLeftInTurn(10.0), 12.0); // the second view's
+        FramePacer::spentInTurn(12.0);
+        scene.clock += 12.0;
+        QCOMPARE(FramePacer::budgetLeftInTurn(10.0), 0.0);
+        scene.clock += 40.0; // composing the window, a bake's result: not drawing, same event
+        QCOMPARE(FramePacer::budgetLeftInTurn(10.0), 0.0); // a measure slice waits
+        FramePacer::endTurn();
+        scene.clock += 9.0;
+        QCOMPARE(FramePacer::budgetLeftInTurn(10.0), 0.0); // within the breath
+        FramePacer::spentInTurn(5.0);                     // a copy while breathing counts nowhere
+        FramePacer::endTurn();                            // nor does it end a turn again
+        scene.clock += 1.0;
+        QCOMPARE(FramePacer::budgetLeftInTurn(10.0), 30.0); // a new turn
+        FramePacer::endTurn();
+        m_scene = nullptr;
+    }
 
     void aFrameThatFitsIsWholeInOneStep() {
         FakeScene scene;

@@ -19,11 +19,13 @@
 #include "parallax/render/GpuMaterial.h"
 #include "preview/FramePacer.h"
 #include "preview/PreviewRenderer.h"
+#include "widgets/ImageConvert.h"
 #include "widgets/SliderField.h"
 #include "widgets/TechniqueCombo.h"
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QLabel>
 #include <QMessageBox>
 #include <QOpenGLContext>
 #include <QPainter>
@@ -33,6 +35,7 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QToolButton>
+#include <array>
 
 using namespace px;
 using namespace px::studio;
@@ -225,7 +228,6 @@ private slots:
         QVERIFY(w);
         PreviewWidget* preview = w->viewports()->viewport(0)->preview();
         QVERIFY(waitForFigures(preview));
-        preview->setFixedSize(preview->size()); // its width follows its figures' text
 
         FramePacer::setBudgetMs(3.0);
         const auto restore = qScopeGuard([] { FramePacer::setBudgetMs(30.0); });
@@ -258,6 +260,63 @@ private slots:
         QCOMPARE(differing, 0);
     }
 
+    // A view's figures come and go (a new frame says "measuring the error…") and their text
+    // changes length; the views keep their size, so no frame restarts for a text.
+    void figuresDoNotResizeTheViews() {
+        auto w = makeWindow(2);
+        QVERIFY(w);
+        std::array<PreviewWidget*, 2> previews{};
+        for (int i = 0; i < 2; ++i) {
+            previews[i] = w->viewports()->viewport(i)->preview();
+            QVERIFY(waitForFigures(previews[i]));
+        }
+        QTest::qWait(0); // the layout settles once with the first figures' room reserved
+        struct ResizeCounter : QObject {
+            int resizes = 0;
+            bool eventFilter(QObject*, QEvent* e) override {
+                resizes += e->type() == QEvent::Resize ? 1 : 0;
+                return false;
+            }
+        } counter;
+        const QSize sizes[2] = {previews[0]->size(), previews[1]->size()};
+        for (PreviewWidget* p : previews)
+            p->installEventFilter(&counter);
+        // New figures in one view, then in both with a deeper relief.
+        PreviewScene heat = previews[0]->scene();
+        heat.overlays.heatMap = true;
+        previews[0]->setScene(heat);
+        QVERIFY(waitForFigures(previews[0]));
+        w->document()->edit("deeper", [](DocumentState& s) { s.material.heightScale = 0.2f; });
+        for (PreviewWidget* p : previews)
+            QVERIFY(waitForFigures(p));
+        QCoreApplication::processEvents();
+        for (PreviewWidget* p : previews)
+            p->removeEventFilter(&counter);
+        QCOMPARE(counter.resizes, 0);
+        QCOMPARE(previews[0]->size(), sizes[0]);
+        QCOMPARE(previews[1]->size(), sizes[1]);
+        for (int i = 0; i < 2; ++i) {
+            // The figures are not cut off: their room holds their text at the view's width.
+            auto* figures = w->viewports()->viewport(i)->findChild<QLabel*>("figures");
+            QVERIFY(figures);
+            // Cut to the view's width, whole in the figures' text and tooltip.
+            const QString whole = w->viewports()->viewport(i)->statsText();
+            QVERIFY2(whole.contains(QLatin1String("another surface")), qPrintable(whole));
+            QVERIFY(figures->toolTip().contains(QLatin1String("another surface")));
+            QVERIFY2(figures->heightForWidth(figures->width()) <= figures->height(),
+                     qPrintable(QStringLiteral("%1 px of text in %2 px")
+                                    .arg(figures->heightForWidth(figures->width()))
+                                    .arg(figures->height())));
+            // Nor does their text set how narrow the view may be: the header does.
+            Viewport* viewport = w->viewports()->viewport(i);
+            const int narrowest = viewport->minimumSizeHint().width();
+            const QString text = figures->text();
+            figures->setText(QString(400, QLatin1Char('8')));
+            QCOMPARE(viewport->minimumSizeHint().width(), narrowest);
+            figures->setText(text);
+        }
+    }
+
     void figuresAreMeasuredInSlices() {
         auto w = makeWindow(1);
         QVERIFY(w);
@@ -269,8 +328,6 @@ private slots:
                    a.p99Error == b.p99Error && a.maxError == b.maxError &&
                    a.otherSurface == b.otherSurface;
         };
-        // The view's width follows its figures' text: held, so both measurements see one size.
-        preview->setFixedSize(preview->size());
         preview->setScene(preview->scene()); // measured again, the window settled
         QVERIFY(waitForFigures(preview));
         const PreviewStats whole = preview->stats();
@@ -356,6 +413,30 @@ private slots:
         QVERIFY(!ramp.empty());
         QVERIFY(w->loadMap(MapKind::Height, QString::fromStdString(ramp)));
         QTRY_VERIFY(MapRow::thumbnailsMade() > start + 1); // the new height map's
+
+        // A map over 1024² texels gets its thumbnail from a worker: not in the edit, after it,
+        // the same picture.
+        Image albedo(1500, 1000, 3);
+        for (int y = 0; y < albedo.height; ++y)
+            for (int x = 0; x < albedo.width; ++x)
+                for (int c = 0; c < 3; ++c)
+                    albedo.at(x, y, c) = float((x / 7 + y / 5 + c) % 4) / 3.0f;
+        const int before = MapRow::thumbnailsMade();
+        w->document()->edit("albedo", [&](DocumentState& s) {
+            auto assets = std::make_shared<MaterialAssets>(*s.assets);
+            assets->albedo = albedo;
+            s.assets = assets;
+        });
+        QCOMPARE(MapRow::thumbnailsMade(), before);
+        QTRY_COMPARE(MapRow::thumbnailsMade(), before + 1);
+        auto* thumbnail = w->mapsPanel()->row(MapKind::Albedo)->findChild<QLabel*>("thumbnail");
+        QVERIFY(thumbnail);
+        const QImage shown = thumbnail->pixmap().toImage();
+        const int side = shown.width();
+        const QImage expected = toQImage(albedo, side).scaled(side, side, Qt::KeepAspectRatio,
+                                                             Qt::SmoothTransformation);
+        QCOMPARE(shown.convertToFormat(QImage::Format_RGB32),
+                 expected.convertToFormat(QImage::Format_RGB32));
     }
 
     // Bakes run below the GUI thread: TBB's workers (and the bake's job thread) at a higher nice

@@ -6,18 +6,31 @@
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileInfo>
+#include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMimeData>
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <QWindow>
+#include <QtConcurrent/QtConcurrentRun>
+#include <functional>
 
 namespace px::studio {
 
 namespace {
 constexpr int kThumbnail = 40; // logical pixels; drawn at the screen's pixel ratio
 int g_thumbnails = 0;
+
+// Maps up to this many texels (1024²) get their thumbnail at once, bigger ones from a worker.
+constexpr std::size_t kThumbnailOnGuiThread = std::size_t(1) << 20;
+
+// A map's thumbnail, `side` pixels at most (box-filtered, then fitted smoothly).
+template <class Map> QImage thumbnail(const Map& map, int side) {
+    const QImage image = toQImage(map, side);
+    return image.isNull() ? image
+                          : image.scaled(side, side, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+}
 
 // Calls `f` with `kind`'s map in `a` (an Image, a HeightField or a ConeMap).
 template <class F> auto withMap(const MaterialAssets& a, MapKind kind, F&& f) {
@@ -59,6 +72,7 @@ MapRow::MapRow(MapKind kind, bool bakeable, QWidget* parent) : QWidget(parent), 
     setAcceptDrops(true);
     setObjectName(QStringLiteral("map-%1").arg(QString::fromUtf8(mapKey(kind).data())));
     m_thumbnail = new QLabel(this);
+    m_thumbnail->setObjectName(QStringLiteral("thumbnail"));
     m_thumbnail->setFixedSize(kThumbnail, kThumbnail);
     m_thumbnail->setFrameShape(QFrame::StyledPanel);
     m_title = new QLabel(QStringLiteral("<b>%1</b>").arg(mapTitle(kind).data()), this);
@@ -157,15 +171,37 @@ void MapRow::refresh(const DocumentState& state) {
         return;
     m_shownTexels = texels;
     m_shownSide = side;
-    const QImage image =
-        withMap(a, m_kind, [side](const auto& map) { return toQImage(map, side); });
+    ++m_thumbnailSerial;
+    const auto make = withMap(a, m_kind, [side](const auto& map) {
+        // A copy shares the texels (SharedTexels): the job reads them on another thread.
+        return std::function<QImage()>([map, side] { return thumbnail(map, side); });
+    });
+    const std::size_t count = withMap(a, m_kind, [](const auto& map) {
+        return std::size_t(map.width) * std::size_t(map.height);
+    });
+    if (count <= kThumbnailOnGuiThread) {
+        showThumbnail(make(), ratio);
+        return;
+    }
+    // A box filter over 64 M texels took 37 ms of the GUI thread after a cone bake at 8192²
+    // (perf, the studio memory benchmark): big maps' thumbnails are made beside it.
+    auto* watcher = new QFutureWatcher<QImage>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this,
+            [this, watcher, serial = m_thumbnailSerial, ratio] {
+                watcher->deleteLater();
+                if (serial == m_thumbnailSerial) // else a later map's thumbnail is on its way
+                    showThumbnail(watcher->result(), ratio);
+            });
+    watcher->setFuture(QtConcurrent::run(make));
+}
+
+void MapRow::showThumbnail(const QImage& image, double ratio) {
     if (image.isNull()) {
         m_thumbnail->clear();
         return;
     }
     ++g_thumbnails;
-    QPixmap pixmap =
-        QPixmap::fromImage(image.scaled(side, side, Qt::KeepAspectRatio, Qt::SmoothTransformation));
+    QPixmap pixmap = QPixmap::fromImage(image);
     pixmap.setDevicePixelRatio(ratio);
     m_thumbnail->setPixmap(pixmap);
 }

@@ -8,6 +8,7 @@
 #include <QWidget>
 #include <memory>
 
+class QImage;
 class QLabel;
 class QToolButton;
 
@@ -29,7 +30,8 @@ public:
     // A line under the source in warning colour (a baked map out of date); empty hides it.
     void setWarning(const QString& text);
     QString warningText() const;
-    // Thumbnails made so far by every row (tests: a row makes one only when its map changes).
+    // Thumbnails shown so far by every row (tests: a row makes one only when its map changes;
+    // a map over 1024² texels gets it from a worker, later).
     static int thumbnailsMade();
 
 signals:
@@ -43,6 +45,7 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    void showThumbnail(const QImage& thumbnail, double ratio);
     MapKind m_kind;
     QLabel* m_thumbnail;
     QLabel* m_title;
@@ -55,6 +58,7 @@ private:
     // an 8192² map reads 64 M texels, and every edit of the material refreshes the rows).
     std::weak_ptr<const void> m_shownTexels;
     int m_shownSide = 0;
+    int m_thumbnailSerial = 0; // the latest thumbnail asked for; a worker's older one is dropped
 };
 
 } // namespace px::studio

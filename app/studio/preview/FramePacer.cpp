@@ -40,22 +40,31 @@ double FramePacer::budgetMs() {
 }
 
 namespace {
-double g_turnStartMs = 0.0, g_turnSpentMs = 0.0;
-bool g_turnStarted = false;
+double g_turnSpentMs = 0.0, g_turnEndedMs = 0.0;
+bool g_turnOpen = false, g_turnEnded = false;
 } // namespace
 
 double FramePacer::budgetLeftInTurn(double breathMs) {
-    const double now = nowMs();
-    if (!g_turnStarted || now - g_turnStartMs > g_turnSpentMs + breathMs) {
-        g_turnStarted = true;
-        g_turnStartMs = now;
+    if (!g_turnOpen) {
+        if (g_turnEnded && nowMs() - g_turnEndedMs < breathMs)
+            return 0.0;
+        g_turnOpen = true;
         g_turnSpentMs = 0.0;
     }
     return std::max(0.0, g_budgetMs - g_turnSpentMs);
 }
 
 void FramePacer::spentInTurn(double ms) {
-    g_turnSpentMs += ms;
+    if (g_turnOpen)
+        g_turnSpentMs += ms;
+}
+
+void FramePacer::endTurn() {
+    if (!g_turnOpen)
+        return;
+    g_turnOpen = false;
+    g_turnEnded = true;
+    g_turnEndedMs = nowMs();
 }
 
 void FramePacer::setClock(std::function<double()> nowMs) {

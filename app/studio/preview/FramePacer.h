@@ -44,10 +44,13 @@ public:
     // turn stays well under 0.1 s; tests change it).
     static void setBudgetMs(double ms);
     static double budgetMs();
-    // One window update paints every view, so the views share a turn's budget: what the steps
-    // of this turn left (a turn ends `breathMs` after its last step), and a step's drawing spent.
+    // One window update paints every view, so the views' frames and measurements share a turn's
+    // budget: what this turn has left, and what a step spent. A turn ends with the event that
+    // drew, its composing included (endTurn, from a call queued after it); the next opens
+    // `breathMs` later, so input and timers run between, and until then nothing is left.
     static double budgetLeftInTurn(double breathMs);
     static void spentInTurn(double ms);
+    static void endTurn();
 
     // The clock steps and bands are timed with, in ms (tests: a clock the draws advance). Empty:
     // the steady clock.

@@ -91,6 +91,7 @@ struct Measurement {
     std::size_t next = 0;   // the next box to draw
     bool reference = false; // the second pass: exact
     Image hits;             // the first pass's output
+    double boxMs = 0.0;     // the dearest box drawn so far (a pass's last box reads it back)
 };
 
 } // namespace
@@ -423,10 +424,15 @@ std::optional<Result<PreviewStats>> PreviewRenderer::measureStep(double sliceMs)
         return done(s.error());
     if (d.uploading())
         return done(stats); // not valid: measured once the scene's maps are up
-    const auto start = std::chrono::steady_clock::now();
+    using Clock = std::chrono::steady_clock;
+    const auto ms = [](Clock::duration d) {
+        return std::chrono::duration<double, std::milli>(d).count();
+    };
+    const auto start = Clock::now();
     QOpenGLFunctions* f = gl();
     d.surfaceTarget->bind();
     for (;;) {
+        const auto boxStart = Clock::now();
         if (Status s = d.drawNextBox(m); !s) {
             f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
             return done(s.error());
@@ -454,12 +460,17 @@ std::optional<Result<PreviewStats>> PreviewRenderer::measureStep(double sliceMs)
             d.surfaceTarget->bind();
         }
         f->glFinish(); // what the slice has cost so far
-        if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count() >= sliceMs)
+        m.boxMs = std::max(m.boxMs, ms(Clock::now() - boxStart));
+        // At least a box a step; no box that would take the step past its slice.
+        if (ms(Clock::now() - start) + m.boxMs > sliceMs)
             break;
     }
     f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return std::nullopt;
+}
+
+double PreviewRenderer::measureBoxMs() const {
+    return m_impl->measurement ? m_impl->measurement->boxMs : 0.0;
 }
 
 void PreviewRenderer::cancelMeasure() {

@@ -38,11 +38,13 @@ public:
     // marching techniques' height level follows each pixel's footprint): over every pixel when
     // the heat map is on (and makes it), else over a stratified sample of boxes of the view.
     // Two extra passes, at 8192² 0.2-0.4 s on llvmpipe: drawn a slice at a time, so the event
-    // loop runs between. beginMeasure() starts over; each measureStep() draws boxes for about
-    // `sliceMs` and returns the figures once both passes are done (not valid while the maps
-    // upload), else nothing yet.
+    // loop runs between. beginMeasure() starts over; each measureStep() draws at least one box,
+    // and no box it expects to take it past `sliceMs` (measureBoxMs: the dearest box so far), and
+    // returns the figures once both passes are done (not valid while the maps upload), else
+    // nothing yet.
     Status beginMeasure(const PreviewScene& scene, QSize pixels, double frameMs);
     std::optional<Result<PreviewStats>> measureStep(double sliceMs);
+    double measureBoxMs() const;
     void cancelMeasure();
     bool measuring() const;
     QImage heatMap() const { return m_heatMap; }

@@ -1,10 +1,12 @@
 #include "preview/PreviewWidget.h"
 
 #include "parallax/render/RenderTarget.h" // parallax-render
+#include "preview/FramePacer.h"
 #include "preview/PreviewRenderer.h"
 #include "preview/ViewInteraction.h"
 #include "widgets/Hints.h"
 
+#include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QLinearGradient>
 #include <QMouseEvent>
@@ -12,6 +14,7 @@
 #include <QPainter>
 #include <QTimer>
 #include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 
 namespace px::studio {
@@ -21,7 +24,7 @@ namespace {
 constexpr double kWipeGrab = 8.0;
 // A slice of the measurement's drawing between two turns of the event loop.
 double g_measureSliceMs = 30.0;
-// A frame's drawing waits this long after the paint event of its last step (FramePacer.h).
+// Drawing waits this long after the turn that drew last (FramePacer::endTurn).
 constexpr qint64 kBreathMs = 10;
 } // namespace
 
@@ -110,12 +113,25 @@ void PreviewWidget::measureSlice() {
         dropMeasurement(); // again when it shows
         return;
     }
+    // The views' frames and measurements share a turn's budget (FramePacer): a slice waits for
+    // the next turn rather than start a box the turn has no room left for.
+    const double left = FramePacer::budgetLeftInTurn(kBreathMs);
+    if (left < FramePacer::budgetMs() && left < std::max(1.0, m_renderer->measureBoxMs())) {
+        m_sliceTimer->start(kBreathMs);
+        return;
+    }
+    QElapsedTimer clock;
+    clock.start();
     makeCurrent();
-    std::optional<Result<PreviewStats>> measured = m_renderer->measureStep(g_measureSliceMs);
+    std::optional<Result<PreviewStats>> measured =
+        m_renderer->measureStep(std::min(g_measureSliceMs, left));
     doneCurrent();
+    FramePacer::spentInTurn(static_cast<double>(clock.nsecsElapsed()) / 1e6);
+    QMetaObject::invokeMethod(
+        this, [] { FramePacer::endTurn(); }, Qt::QueuedConnection);
     ++m_measureSlices;
     if (!measured) {
-        m_sliceTimer->start(); // the rest after the events waiting
+        m_sliceTimer->start(0); // the rest after the events waiting
         return;
     }
     const Result<PreviewStats>& stats = *measured;
@@ -190,15 +206,14 @@ void PreviewWidget::paintGL() {
     painter.beginNativePainting();
     bool complete = false;
     if (m_renderer) {
-        // A step right after one that drew (its paint event just ended) draws nothing: what
-        // came meanwhile, input, timers, is handled first.
-        const bool breathe = m_lastDrawn.isValid() && m_lastDrawn.elapsed() < kBreathMs;
+        // Nothing is drawn within a breath of the turn that drew last (FramePacer::endTurn):
+        // what came meanwhile, input, timers, is handled first.
         const double budget = FramePacer::budgetLeftInTurn(kBreathMs);
         QElapsedTimer stepClock;
         stepClock.start();
         Result<FramePacer::Step> step =
             m_renderer->drawStep(m_scene, m_sceneSerial, pixels, defaultFramebufferObject(),
-                                 breathe || budget < 1.0 ? 0.0 : budget);
+                                 budget < 1.0 ? 0.0 : budget);
         FramePacer::spentInTurn(static_cast<double>(stepClock.nsecsElapsed()) / 1e6);
         if (!step) {
             m_renderError = QString::fromStdString(step.error().message);
@@ -210,21 +225,17 @@ void PreviewWidget::paintGL() {
                 m_stats.frameMs = step->frameMs;
                 ++m_frames;
             }
-            const bool drew = step->bands > 0 || step->standIn;
-            if (drew || !complete) {
-                // Timed from the end of this paint event, composing included: the rest of the
-                // frame after a breath.
-                QMetaObject::invokeMethod(
-                    this,
-                    [this, drew, complete] {
-                        if (drew)
-                            m_lastDrawn.start();
-                        if (!complete)
-                            m_continueFrame->start();
-                    },
-                    Qt::QueuedConnection);
-            }
         }
+        // The turn ends after this paint event, composing included; the rest of the frame a
+        // breath later.
+        QMetaObject::invokeMethod(
+            this,
+            [this, complete] {
+                FramePacer::endTurn();
+                if (!complete)
+                    m_continueFrame->start();
+            },
+            Qt::QueuedConnection);
         if (m_renderer->uploading()) {
             // Drawn with the maps there were: again once the scene's are up, then measured.
             m_measured = false;

@@ -96,7 +96,6 @@ private:
     class QTimer* m_continueFrame;
     std::uint64_t m_sceneSerial = 1; // the frame's: a new scene or size starts a new frame
     bool m_frameComplete = false;
-    QElapsedTimer m_lastDrawn; // since the paint event of the last step that drew
     int m_measureSlices = 0;
     bool m_measured = false;
     Drag m_drag = Drag::None;

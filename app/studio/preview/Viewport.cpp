@@ -15,6 +15,15 @@
 
 namespace px::studio {
 
+QString Viewport::figuresExplained() {
+    return tr("Frame time (CPU wall clock around the draw and glFinish), mean "
+              "height fetches per pixel, and the error of each pixel's hit against "
+              "the exact intersection, in texels (mean, 99th percentile and max), "
+              "and the share of pixels whose hit lies on another surface (more than "
+              "2 texels from the exact one): a few such pixels lift the mean above "
+              "the p99.");
+}
+
 Viewport::Viewport(int index, MaterialDocument* document, const QString& liveReason,
                    QWidget* parent)
     : QFrame(parent), m_index(index), m_document(document) {
@@ -67,14 +76,16 @@ Viewport::Viewport(int index, MaterialDocument* document, const QString& liveRea
     content->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
 
     m_stats = new QLabel(this);
+    m_stats->setObjectName(QStringLiteral("figures"));
     m_stats->setTextFormat(Qt::RichText);
     m_stats->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_stats->setToolTip(tr("Frame time (CPU wall clock around the draw and glFinish), mean "
-                           "height fetches per pixel, and the error of each pixel's hit against "
-                           "the exact intersection, in texels (mean, 99th percentile and max), "
-                           "and the share of pixels whose hit lies on another surface (more than "
-                           "2 texels from the exact one): a few such pixels lift the mean above "
-                           "the p99."));
+    // Three lines, each cut to the view's width (whole in statsText and the tooltip): were the
+    // view's size to follow the figures' text, every new figure would resize the views and
+    // restart their frames (a 2-view window jumped 212 <-> 506 px as figures came and went).
+    m_stats->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    m_stats->setText(QStringLiteral("<b>8</b><br>8<br>8"));
+    m_stats->setFixedHeight(m_stats->sizeHint().height());
+    m_stats->installEventFilter(this);
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
@@ -137,6 +148,12 @@ void Viewport::editOverlays(const std::function<void(ViewOverlays&)>& change) {
     emit overlaysEdited(m_index, next);
 }
 
+bool Viewport::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_stats && event->type() == QEvent::Resize)
+        fitStats();
+    return QFrame::eventFilter(watched, event);
+}
+
 void Viewport::mousePressEvent(QMouseEvent* event) {
     emit activated(m_index);
     QFrame::mousePressEvent(event);
@@ -174,36 +191,59 @@ void Viewport::pushScene() {
 }
 
 QString Viewport::statsText() const {
-    return m_stats->text();
+    return m_figures.join(QStringLiteral("<br>"));
 }
 
 void Viewport::showStats() {
     const QString name =
         QString::fromUtf8(info(m_document->state().view(m_index).technique).name.data());
-    if (!m_preview) {
-        m_stats->setText(name);
-        return;
+    m_figures = QStringList{QStringLiteral("<b>%1</b>").arg(name)};
+    if (m_preview) {
+        const PreviewStats& st = m_preview->stats();
+        if (st.frameMs > 0)
+            m_figures[0] += tr(" · %1 ms").arg(st.frameMs, 0, 'f', 1);
+        if (st.valid && st.pixels > 0) {
+            m_figures[0] += tr(" · %1 fetches/px").arg(st.fetchesPerPixel, 0, 'f', 1);
+            // Worst first: the line is cut at the view's width.
+            m_figures << tr("error in texels: max %1, p99 %2, mean %3")
+                             .arg(st.maxError, 0, 'f', 2)
+                             .arg(st.p99Error, 0, 'f', 3)
+                             .arg(st.meanError, 0, 'f', 3);
+            QString third =
+                tr("%1 % on another surface").arg(100.0 * st.otherSurface / st.pixels, 0, 'f', 2);
+            // A mesh's rims (docs/meshes.md): said, so the figures' pixels are known.
+            if (st.steepPixels > 0)
+                third += tr(" · %1 px steeper than 89° not counted").arg(st.steepPixels);
+            m_figures << third;
+        } else
+            m_figures << (st.valid ? tr("no surface in view") : tr("measuring the error…"));
     }
-    const PreviewStats& st = m_preview->stats();
-    QString text = QStringLiteral("<b>%1</b>").arg(name);
-    if (st.frameMs > 0)
-        text += tr(" · %1 ms").arg(st.frameMs, 0, 'f', 1);
-    if (st.valid && st.pixels > 0) {
-        text += tr(" · %1 fetches/px<br>error vs exact: mean %2, p99 %3, max %4 texels · %5 % on "
-                   "another surface")
-                    .arg(st.fetchesPerPixel, 0, 'f', 1)
-                    .arg(st.meanError, 0, 'f', 3)
-                    .arg(st.p99Error, 0, 'f', 3)
-                    .arg(st.maxError, 0, 'f', 2)
-                    .arg(100.0 * st.otherSurface / st.pixels, 0, 'f', 2);
-        // A mesh's rims (docs/meshes.md): said, so the figures' pixels are known.
-        if (st.steepPixels > 0)
-            text += tr(" · %1 px steeper than 89° not counted").arg(st.steepPixels);
-    } else if (st.valid)
-        text += tr("<br>no surface in view");
-    else
-        text += tr("<br>measuring the error…");
-    m_stats->setText(text);
+    fitStats();
+}
+
+void Viewport::fitStats() {
+    // Each line cut to the label's width; only the technique's name, first, is marked up.
+    const int width = m_stats->contentsRect().width();
+    QFont bold = m_stats->font();
+    bold.setBold(true);
+    const QFontMetrics plain(m_stats->font()), strong(bold);
+    QStringList shown;
+    for (const QString& line : m_figures) {
+        const bool named = line.startsWith(QLatin1String("<b>"));
+        const qsizetype close = named ? line.indexOf(QLatin1String("</b>")) : 0;
+        const QString head = named ? line.mid(3, close - 3) : QString();
+        const QString rest = named ? line.mid(close + 4) : line;
+        const int headWidth = strong.horizontalAdvance(head);
+        QString fitted = strong.elidedText(head, Qt::ElideRight, width);
+        fitted = fitted.isEmpty() ? fitted : QStringLiteral("<b>%1</b>").arg(fitted);
+        if (headWidth < width)
+            fitted += plain.elidedText(rest, Qt::ElideRight, width - headWidth).toHtmlEscaped();
+        shown << fitted;
+    }
+    m_stats->setText(shown.join(QStringLiteral("<br>")));
+    QString whole = m_figures.join(QLatin1Char('\n'));
+    whole.remove(QStringLiteral("<b>")).remove(QStringLiteral("</b>"));
+    m_stats->setToolTip(whole + QStringLiteral("\n\n") + figuresExplained());
 }
 
 } // namespace px::studio

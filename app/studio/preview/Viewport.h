@@ -1,6 +1,6 @@
 #pragma once
 // One cell of the viewport grid: a header to pick the viewport's technique and overlays, the
-// live preview (or a placeholder), and a line with its figures: technique, frame time, fetches
+// live preview (or a placeholder), and three lines of figures: technique, frame time, fetches
 // per pixel, error against the exact intersection.
 
 #include "preview/PreviewScene.h"
@@ -48,11 +48,14 @@ signals:
 
 protected:
     void mousePressEvent(QMouseEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void refresh();
     void pushScene();
     void showStats();
+    void fitStats();
+    static QString figuresExplained();
     void editOverlays(const std::function<void(ViewOverlays&)>& change);
 
     int m_index;
@@ -68,6 +71,7 @@ private:
     PreviewWidget* m_preview = nullptr;
     PreviewPlaceholder* m_placeholder = nullptr;
     QLabel* m_stats;
+    QStringList m_figures; // whole (rich text); m_stats shows each line cut to its width
 };
 
 } // namespace px::studio
