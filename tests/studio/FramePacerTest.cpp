@@ -121,8 +121,8 @@ private slots:
         FramePacer::endTurn();
         scene.clock += 9.0;
         QCOMPARE(FramePacer::budgetLeftInTurn(10.0), 0.0); // within the breath
-        FramePacer::spentInTurn(5.0);                     // a copy while breathing counts nowhere
-        FramePacer::endTurn();                            // nor does it end a turn again
+        FramePacer::spentInTurn(5.0);                      // a copy while breathing counts nowhere
+        FramePacer::endTurn();                             // nor does it end a turn again
         scene.clock += 1.0;
         QCOMPARE(FramePacer::budgetLeftInTurn(10.0), 30.0); // a new turn
         FramePacer::endTurn();

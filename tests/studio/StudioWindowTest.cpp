@@ -433,8 +433,9 @@ private slots:
         QVERIFY(thumbnail);
         const QImage shown = thumbnail->pixmap().toImage();
         const int side = shown.width();
-        const QImage expected = toQImage(albedo, side).scaled(side, side, Qt::KeepAspectRatio,
-                                                             Qt::SmoothTransformation);
+        const QImage expected =
+            toQImage(albedo, side)
+                .scaled(side, side, Qt::KeepAspectRatio, Qt::SmoothTransformation);
         QCOMPARE(shown.convertToFormat(QImage::Format_RGB32),
                  expected.convertToFormat(QImage::Format_RGB32));
     }
