@@ -204,16 +204,21 @@ private slots:
         const double sky = 20.0 / (kSize.x * kSize.y);
         scene.perPixel = [&](int row) { return row < kSize.y / 2 ? sky : 10.0 * sky; };
         FramePacer pacer;
-        double worst = 0.0;
+        double worst[4] = {};
         for (std::uint64_t serial = 1; serial <= 3; ++serial) { // the cost known from frame 2 on
             FramePacer::Step s;
             do {
                 double ms = 0.0;
                 s = step(pacer, scene, serial, 30.0, &ms);
-                worst = std::max(worst, ms);
+                worst[serial] = std::max(worst[serial], ms);
             } while (!s.complete);
         }
-        QVERIFY2(worst <= 2.0 * 30.0, qPrintable(QString::number(worst)));
+        // The first frame knows the scene's mean cost (the probe) and keeps within twice the
+        // budget; the next ones know each row's cost from the frame before, and keep to it.
+        QVERIFY2(worst[1] <= 2.0 * 30.0, qPrintable(QString::number(worst[1])));
+        for (int frame : {2, 3})
+            QVERIFY2(worst[frame] <= 30.0 + 1e-9,
+                     qPrintable(QStringLiteral("frame %1: %2 ms").arg(frame).arg(worst[frame])));
     }
 };
 

@@ -97,6 +97,8 @@ Result<FramePacer::Step> FramePacer::step(std::uint64_t serial, std::uint64_t co
         return s.error();
     // Other maps (an upload landed), another technique: another picture, at another cost.
     const bool newCost = !m_started || costKey != m_costKey;
+    if (newCost || m_rowMs.size() != std::size_t(height))
+        m_rowMs.clear(); // the last frame's costs a row describe another picture
     if (newCost) {
         m_msPerPixel.reset();
         m_meanPerPixel = 0.0;
@@ -110,6 +112,7 @@ Result<FramePacer::Step> FramePacer::step(std::uint64_t serial, std::uint64_t co
         m_frameMs = 0.0;
         m_standInShown = m_standInDecided = false;
         m_started = true;
+        m_rowMsDrawn.assign(std::size_t(height), 0.0);
     }
     Step step;
     const bool breathe = budgetMs <= 0.0;
@@ -125,6 +128,7 @@ Result<FramePacer::Step> FramePacer::step(std::uint64_t serial, std::uint64_t co
         // Learnt quickly upwards (a band over the mesh after one over the sky), slowly down.
         const double perPixel = ms / (double(rows) * width);
         m_msPerPixel = m_msPerPixel ? std::max(perPixel, 0.5 * *m_msPerPixel) : perPixel;
+        std::fill_n(m_rowMsDrawn.begin() + m_rowsDone, rows, ms / rows);
         m_frameMs += ms;
         m_rowsDone += rows;
         m_bandRows = rows;
@@ -178,7 +182,19 @@ Result<FramePacer::Step> FramePacer::step(std::uint64_t serial, std::uint64_t co
     // completes.
     while (m_rowsDone < height && !breathe) {
         const double left = budgetMs - (nowMs() - start);
-        int rows = static_cast<int>(left / (std::max(*m_msPerPixel, m_meanPerPixel) * width));
+        const double rowMs = std::max(*m_msPerPixel, m_meanPerPixel) * width;
+        int rows = 0;
+        if (m_rowMs.empty()) {
+            rows = static_cast<int>(left / rowMs);
+        } else {
+            // The last frame of this cost said what each row costs: a band stops before the
+            // rows that were dear (a small mesh under much sky), never grows past the estimate.
+            for (double sum = 0.0; m_rowsDone + rows < height; ++rows) {
+                sum += std::max(rowMs, m_rowMs[std::size_t(m_rowsDone + rows)]);
+                if (sum > left)
+                    break;
+            }
+        }
         rows = std::min({rows, 2 * m_bandRows, height - m_rowsDone});
         if (rows < 1) {
             if (step.bands > 0 || step.standIn)
@@ -190,6 +206,8 @@ Result<FramePacer::Step> FramePacer::step(std::uint64_t serial, std::uint64_t co
     }
 
     step.complete = m_rowsDone >= height;
+    if (step.complete && step.bands > 0)
+        m_rowMs = m_rowMsDrawn;
     step.frameMs = step.complete ? m_frameMs : 0.0;
     const RenderTarget& shown = step.complete || !m_standInShown ? *m_frame : *m_standIn;
     f->glBindFramebuffer(GL_READ_FRAMEBUFFER, shown.framebuffer());

@@ -3,10 +3,10 @@
 // 8192² maps costs 120-160 ms, longer than the event loop may stall: the pacer draws the frame
 // into its own target in bands of rows, as many as the budget allows, and shows it once every
 // band is there; meanwhile a picture of the same scene at fewer pixels, drawn first to fit the
-// budget. The cost per pixel is learnt from the bands drawn; an unknown cost (another technique,
-// other maps, another size) is first probed on the whole scene at a 64th of the pixels. Where a
-// frame fits (a GPU, small maps) the pacer adds a probe per new cost and a copy a frame. Needs the
-// view's GL context current.
+// budget. The cost per pixel is learnt from the bands drawn, and each row's from the last whole
+// frame; an unknown cost (another technique, other maps, another size) is first probed on the
+// whole scene at a 64th of the pixels. Where a frame fits (a GPU, small maps) the pacer adds a
+// probe per new cost and a copy a frame. Needs the view's GL context current.
 
 #include "parallax/Result.h"
 #include "parallax/render/RenderTarget.h" // parallax-render
@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
 namespace px::studio {
 
@@ -67,8 +68,10 @@ private:
     int m_rowsDone = 0;     // rows of m_frame drawn for m_serial, from the top
     double m_frameMs = 0.0; // their cost
     bool m_standInShown = false, m_standInDecided = false;
-    double m_standInShare = 0.0; // of the view's pixels
-    double m_meanPerPixel = 0.0; // the last stand-in's cost a pixel
+    double m_standInShare = 0.0;      // of the view's pixels
+    double m_meanPerPixel = 0.0;      // the last stand-in's cost a pixel
+    std::vector<double> m_rowMs;      // each row's cost in the last whole frame of this cost
+    std::vector<double> m_rowMsDrawn; // ... in the frame being drawn
 };
 
 } // namespace px::studio
