@@ -1,11 +1,12 @@
 // The editor on a big height map, as an artist meets it: a 16-bit PNG of N² texels (8192 by
-// default) loaded into a window with two viewports, then a cone bake and a view on `cone`. Reports
-// the process's peak resident memory after the load and after the bake (VmHWM; the map's generation
-// is freed and the peak restarted before the window opens) and the longest the event loop went
-// without running a 10 ms timer through each phase. Needs a display (Xvfb will do) and, for the
-// previews, GL 4.3.
+// default; value noise, or another generated map) loaded into a window with two viewports, then a
+// cone bake and a view on `cone`. Reports the process's peak resident memory after the load and
+// after the bake (VmHWM; the map's generation is freed and the peak restarted before the window
+// opens) and the longest the event loop went without running a 10 ms timer through each phase.
+// Needs a display (Xvfb will do) and, for the previews, GL 4.3.
 //
-//   parallax-bench-studio-memory [--size N] [--views 1..4] [--slow-events MS]
+//   parallax-bench-studio-memory [--size N] [--views 1..4] [--map noise|bricks|...]
+//                                [--slow-events MS]
 //                                [--trace-resizes on|off]
 //
 // Memory is measured here rather than in a unit test: what it reads depends on the GL driver
@@ -150,12 +151,20 @@ bool drawEveryView(MainWindow& window, int views) {
     return true;
 }
 
+std::string argumentOf(int argc, char** argv, const char* flag, const char* otherwise) {
+    for (int i = 1; i + 1 < argc; i += 2)
+        if (std::string(argv[i]) == flag)
+            return argv[i + 1];
+    return otherwise;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     setUpOpenGl();
     TracingApplication app(argc, argv);
     int size = 8192, views = 2;
+    std::optional<ProceduralMap> map = ProceduralMap::Noise;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         if (flag == "--size")
@@ -164,6 +173,8 @@ int main(int argc, char** argv) {
             views = std::atoi(argv[i + 1]);
         else if (flag == "--slow-events")
             app.slowMs = std::atoi(argv[i + 1]);
+        else if (flag == "--map")
+            map = parseProceduralMap(argv[i + 1]);
         else if (flag == "--trace-resizes")
             app.traceResizes = std::string(argv[i + 1]) == "on";
     }
@@ -172,9 +183,10 @@ int main(int argc, char** argv) {
         if (app.slowMs > 0)
             std::fprintf(stderr, "-- %s at %.3f s\n", phase, app.since.elapsed() / 1000.0);
     };
-    if (size < 16 || views < 1 || views > 4) {
+    if (size < 16 || views < 1 || views > 4 || !map) {
         std::fprintf(stderr, "usage: parallax-bench-studio-memory [--size N>=16] [--views 1..4] "
-                             "[--slow-events MS] [--trace-resizes on|off]\n");
+                             "[--map noise|bricks|...] [--slow-events MS] "
+                             "[--trace-resizes on|off]\n");
         return 2;
     }
     const GlProbe& gl = probeOpenGl();
@@ -186,9 +198,8 @@ int main(int argc, char** argv) {
     QTemporaryDir dir;
     const std::string file = dir.filePath("height.png").toStdString();
     {
-        const Status written =
-            writeImage(file, makeProceduralMap(ProceduralMap::Noise, size, size).toImage(),
-                       {PixelFormat::UInt16, false});
+        const Status written = writeImage(file, makeProceduralMap(*map, size, size).toImage(),
+                                          {PixelFormat::UInt16, false});
         if (!written) {
             std::fprintf(stderr, "%s\n", written.error().message.c_str());
             return 1;
@@ -254,7 +265,8 @@ int main(int argc, char** argv) {
     const double viewPeak = statusMiB("VmHWM");
     const double residentView = statusMiB("VmRSS");
 
-    std::printf("editor, %d² 16-bit height map, %d viewports, %s\n", size, views,
+    std::printf("editor, %d² 16-bit height map (%s), %d viewports, %s\n", size,
+                argumentOf(argc, argv, "--map", "noise").c_str(), views,
                 gl.renderer.toUtf8().constData());
     std::printf("| phase | peak resident | longest event-loop gap | wall |\n|---|---|---|---|\n");
     std::printf("| window on the 64² sample | %.0f MiB | | |\n", before);
