@@ -75,7 +75,7 @@ function(px_add_cli_test)
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   set(_labels cli ${T_LABELS})
   set_tests_properties(cli.${T_NAME} PROPERTIES LABELS "${_labels}" TIMEOUT ${T_TIMEOUT})
-  if(T_ENV)
-    set_tests_properties(cli.${T_NAME} PROPERTIES ENVIRONMENT "${T_ENV}")
-  endif()
+  # The user's cache folder is not the tests' (recommend keeps cone maps there).
+  set_tests_properties(cli.${T_NAME} PROPERTIES ENVIRONMENT
+                       "XDG_CACHE_HOME=${CMAKE_BINARY_DIR}/xdg-cache;${T_ENV}")
 endfunction()

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 #include <utility>
@@ -42,7 +43,20 @@ struct RecommendOptions {
     bool hdrp = false;
     bool json = false;
     std::string out = "-";
+    std::string cache; // empty: the user's cache folder; "off": none
 };
+
+// Where baked cone maps are kept between runs: $XDG_CACHE_HOME/parallax-studio/cone-maps, else
+// ~/.cache/...; nothing when neither is set.
+std::string defaultConeCache() {
+    const char* xdg = std::getenv("XDG_CACHE_HOME");
+    const char* home = std::getenv("HOME");
+    if (xdg && *xdg)
+        return std::string(xdg) + "/parallax-studio/cone-maps";
+    if (home && *home)
+        return std::string(home) + "/.cache/parallax-studio/cone-maps";
+    return {};
+}
 
 std::string num(double value, const char* pattern = "%.4g") {
     if (!std::isfinite(value))
@@ -152,6 +166,9 @@ std::string toText(const Recommendation& r, const RecommendConfig& c,
     t << "  confidence: " << r.confidence << "\n";
     for (const EngineLayersAdvice& e : engines)
         t << "  " << e.note << "\n";
+    if (!c.cacheDir.empty() && r.mapsBaked + r.mapsFromDisk > 0)
+        t << "  cone maps: " << r.mapsBaked << " baked, " << r.mapsFromDisk << " read from "
+          << c.cacheDir << "\n";
     return t.str();
 }
 
@@ -162,6 +179,9 @@ int runRecommend(const RecommendOptions& o) {
         return fail(
             "give the budget in texels (--budget) or in pixels (--budget-pixels), not both");
     RecommendConfig config;
+    config.cacheDir = o.cache == "off"  ? std::string()
+                      : o.cache.empty() ? defaultConeCache()
+                                        : o.cache;
     config.maxPolarDeg = o.maxPolar;
     config.raysPerSide = o.rays;
     config.budget.metric = *parseBudgetMetric(o.metric);
@@ -292,6 +312,9 @@ Action addRecommendCommand(CLI::App& app) {
     cmd->add_flag("--godot", o->godot, "Also the fewest Godot deep-parallax layers that meet it");
     cmd->add_flag("--hdrp", o->hdrp,
                   "Also the fewest Unity HDRP parallax-occlusion steps that meet it");
+    cmd->add_option("--cache", o->cache,
+                    "Folder keeping baked cone maps between runs, or 'off' (default: "
+                    "$XDG_CACHE_HOME/parallax-studio/cone-maps)");
     cmd->add_flag("--json", o->json, "Write JSON instead of text");
     cmd->add_option("--out", o->out, "Output file (default: standard output)");
     return [o] { return runRecommend(*o); };

@@ -1,5 +1,6 @@
 #include "ProbeRun.h"
 
+#include "ConeCacheFile.h"
 #include "parallax/bake/ConeMapBaker.h"
 
 #include <algorithm>
@@ -67,9 +68,10 @@ void clearProbeCache() {
 ProbeRun::ProbeRun(const RecommendConfig& config, const EvalControl& control)
     : m_config(config), m_control(control), m_polars(recommendationPolars(config.maxPolarDeg)) {
     const HeightField& field = *config.field;
+    m_contentHash = contentHash(field);
     char key[64];
-    std::snprintf(key, sizeof key, "%016llx/%dx%d/",
-                  static_cast<unsigned long long>(contentHash(field)), field.width, field.height);
+    std::snprintf(key, sizeof key, "%016llx/%dx%d/", static_cast<unsigned long long>(m_contentHash),
+                  field.width, field.height);
     m_contentKey = std::string(key) + std::string(toString(config.wrap));
     m_mapKey = m_contentKey + "/s" + number(config.scale) + "/r" +
                std::to_string(config.raysPerSide) + "/c" + number(config.confidence) + "/a";
@@ -104,12 +106,24 @@ Status ProbeRun::prepare(const std::vector<Technique>& techniques) {
         }
         if (slot)
             continue;
-        Result<ConeMap> baked = bakeConeMap(field, m_config.wrap, kind, bakeControl);
-        if (!baked)
-            return isCancelled(baked.error())
-                       ? Status(evaluationCancelled())
-                       : Status(fileError(m_config.name, baked.error().message));
-        slot = std::make_shared<const ConeMap>(std::move(*baked));
+        const ConeCacheKey diskKey{m_contentHash, field.width, field.height, m_config.wrap, kind};
+        std::optional<ConeMap> kept;
+        if (!m_config.cacheDir.empty())
+            kept = readCachedCone(m_config.cacheDir, diskKey);
+        if (kept) {
+            slot = std::make_shared<const ConeMap>(std::move(*kept));
+            ++m_mapsFromDisk;
+        } else {
+            Result<ConeMap> baked = bakeConeMap(field, m_config.wrap, kind, bakeControl);
+            if (!baked)
+                return isCancelled(baked.error())
+                           ? Status(evaluationCancelled())
+                           : Status(fileError(m_config.name, baked.error().message));
+            slot = std::make_shared<const ConeMap>(std::move(*baked));
+            ++m_mapsBaked;
+            if (!m_config.cacheDir.empty())
+                writeCachedCone(m_config.cacheDir, diskKey, *slot, m_config.cacheLimitBytes);
+        }
         std::lock_guard lock(cache().mutex);
         cache().trim();
         cache().cones[coneKey] = slot;

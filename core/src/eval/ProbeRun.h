@@ -37,6 +37,8 @@ public:
 
     int cachedAngles() const { return m_cached; }
     int measuredAngles() const { return m_measured; }
+    int mapsBaked() const { return m_mapsBaked; }
+    int mapsFromDisk() const { return m_mapsFromDisk; }
     std::int64_t raysPerAngle() const;
 
 private:
@@ -45,6 +47,7 @@ private:
 
     const RecommendConfig& m_config;
     const EvalControl& m_control;
+    std::uint64_t m_contentHash = 0;
     std::string m_contentKey; // content hash, size and wrap: what the derived maps depend on
     std::string m_mapKey;     // and the scale and sampling: what the measures depend on
     std::vector<double> m_polars;
@@ -56,6 +59,7 @@ private:
         m_references;
     int m_cached = 0;
     int m_measured = 0;
+    int m_mapsBaked = 0, m_mapsFromDisk = 0; // cone maps, this run
 };
 
 void clearProbeCache();

@@ -251,6 +251,8 @@ Result<Recommendation> recommend(const RecommendConfig& config, const EvalContro
     r.confidence = confidenceStatement(config, r.raysPerAngle);
     r.cachedAngles = run.cachedAngles();
     r.measuredAngles = run.measuredAngles();
+    r.mapsBaked = run.mapsBaked();
+    r.mapsFromDisk = run.mapsFromDisk();
     return r;
 }
 

@@ -72,6 +72,10 @@ struct RecommendConfig {
     // and cached by content.
     std::shared_ptr<const ConeMap> cone;
     std::shared_ptr<const ConeMap> relaxedCone;
+    // A folder where baked cone maps are kept between runs (empty: none), and how much of it
+    // they may take; docs/recommend.md.
+    std::string cacheDir;
+    std::uint64_t cacheLimitBytes = std::uint64_t(2) << 30;
     GpuFrameTimer gpuTimer; // needed for CostMeasure::GpuTime
     std::string gpuUnavailable;
 };
@@ -108,6 +112,8 @@ struct Recommendation {
     std::int64_t raysPerAngle = 0;
     int cachedAngles = 0; // angle measures taken from the cache
     int measuredAngles = 0;
+    int mapsBaked = 0;    // cone maps baked by this call
+    int mapsFromDisk = 0; // ... read from RecommendConfig::cacheDir instead
 };
 
 // The polar angles a recommendation judges, steepest first: the maximum and 5, 10, 20, 40 and

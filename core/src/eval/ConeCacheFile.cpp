@@ -1,0 +1,162 @@
+#include "ConeCacheFile.h"
+
+#include "parallax/Version.h"
+#include "parallax/bake/ConeMapBaker.h"
+#include "parallax/io/AtomicWrite.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace px {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr char kMagic[8] = {'P', 'X', 'C', 'O', 'N', 'E', '0', '1'};
+constexpr const char* kSuffix = ".pxcone";
+
+// The header, as written (little-endian hosts: the project's platforms are).
+struct Header {
+    char magic[8];
+    std::uint64_t content;
+    std::int32_t width, height, wrap, kind;
+    std::uint64_t baker;
+    std::uint64_t payload; // FNV-1a of the texels' bytes
+};
+
+std::uint64_t fnv(const void* data, std::size_t bytes, std::uint64_t h = 0xcbf29ce484222325ULL) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t k = 0; k < bytes; ++k) {
+        h ^= p[k];
+        h *= 0x100000001b3ULL;
+    }
+    return h;
+}
+
+Header headerFor(const ConeCacheKey& key) {
+    Header h{};
+    std::memcpy(h.magic, kMagic, sizeof kMagic);
+    h.content = key.content;
+    h.width = key.width;
+    h.height = key.height;
+    h.wrap = static_cast<std::int32_t>(key.wrap);
+    h.kind = static_cast<std::int32_t>(key.kind);
+    h.baker = coneBakerFingerprint();
+    return h;
+}
+
+bool sameKey(const Header& a, const Header& b) {
+    return std::memcmp(a.magic, b.magic, sizeof a.magic) == 0 && a.content == b.content &&
+           a.width == b.width && a.height == b.height && a.wrap == b.wrap && a.kind == b.kind &&
+           a.baker == b.baker;
+}
+
+// Removes the oldest of this cache's files (by last use) while they take more than `limit`.
+void trim(const fs::path& dir, std::uint64_t limit) {
+    std::error_code ec;
+    struct Entry {
+        fs::path path;
+        fs::file_time_type used;
+        std::uint64_t bytes;
+    };
+    std::vector<Entry> entries;
+    std::uint64_t total = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind("cone-", 0) != 0 || e.path().extension() != kSuffix ||
+            !e.is_regular_file(ec))
+            continue;
+        const std::uint64_t bytes = e.file_size(ec);
+        entries.push_back({e.path(), e.last_write_time(ec), bytes});
+        total += bytes;
+    }
+    std::sort(entries.begin(), entries.end(),
+              [](const Entry& a, const Entry& b) { return a.used < b.used; });
+    for (const Entry& e : entries) {
+        if (total <= limit)
+            break;
+        if (fs::remove(e.path, ec))
+            total -= e.bytes;
+    }
+}
+
+} // namespace
+
+fs::path coneCachePath(const fs::path& dir, const ConeCacheKey& key) {
+    char name[128];
+    std::snprintf(name, sizeof name, "cone-%016llx-%dx%d-%s-%s-%016llx%s",
+                  static_cast<unsigned long long>(key.content), key.width, key.height,
+                  std::string(toString(key.wrap)).c_str(),
+                  key.kind == ConeKind::Relaxed ? "relaxed" : "conservative",
+                  static_cast<unsigned long long>(coneBakerFingerprint()), kSuffix);
+    return dir / name;
+}
+
+std::optional<ConeMap> readCachedCone(const fs::path& dir, const ConeCacheKey& key) {
+    const fs::path path = coneCachePath(dir, key);
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return std::nullopt;
+    Header found{};
+    const Header wanted = headerFor(key);
+    if (!in.read(reinterpret_cast<char*>(&found), sizeof found) || !sameKey(found, wanted) ||
+        key.width <= 0 || key.height <= 0)
+        return std::nullopt;
+    ConeMap map(key.kind, key.width, key.height);
+    const std::size_t bytes = map.sqrtRatio.size() * sizeof(float);
+    if (!in.read(reinterpret_cast<char*>(map.sqrtRatio.data()), std::streamsize(bytes)) ||
+        in.peek() != std::ifstream::traits_type::eof() ||
+        fnv(map.sqrtRatio.data(), bytes) != found.payload)
+        return std::nullopt;
+    std::error_code ec;
+    fs::last_write_time(path, fs::file_time_type::clock::now(), ec); // its last use, for trim
+    return map;
+}
+
+void writeCachedCone(const fs::path& dir, const ConeCacheKey& key, const ConeMap& map,
+                     std::uint64_t limitBytes) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || map.width != key.width || map.height != key.height)
+        return;
+    Header h = headerFor(key);
+    const std::size_t bytes = map.sqrtRatio.size() * sizeof(float);
+    h.payload = fnv(map.sqrtRatio.data(), bytes);
+    std::string contents(sizeof h + bytes, '\0');
+    std::memcpy(contents.data(), &h, sizeof h);
+    std::memcpy(contents.data() + sizeof h, map.sqrtRatio.data(), bytes);
+    if (!writeFileAtomically(coneCachePath(dir, key).string(), contents))
+        return; // best effort: the bake is in hand
+    trim(dir, limitBytes);
+}
+
+std::uint64_t coneBakerFingerprint() {
+    static const std::uint64_t fingerprint = [] {
+        // A small map with what the bakers treat specially: a wall, a pit, a spike, slopes.
+        HeightField field(24, 20);
+        for (int y = 0; y < field.height; ++y)
+            for (int x = 0; x < field.width; ++x) {
+                float h = 0.3f + 0.02f * float((x * 7 + y * 13) % 11);
+                h = x >= 16 ? 0.9f : h;
+                h = (x == 5 && y == 6) ? 1.0f : h;
+                h = (x >= 9 && x <= 11 && y >= 12 && y <= 14) ? 0.0f : h;
+                field.at(x, y) = h;
+            }
+        std::uint64_t h = fnv(kVersion, std::strlen(kVersion));
+        for (WrapMode wrap : {WrapMode::Repeat, WrapMode::Clamp})
+            for (ConeKind kind : {ConeKind::Conservative, ConeKind::Relaxed}) {
+                const ConeMap cone = bakeConeMap(field, wrap, kind);
+                h = fnv(cone.sqrtRatio.data(), cone.sqrtRatio.size() * sizeof(float), h);
+            }
+        return h;
+    }();
+    return fingerprint;
+}
+
+} // namespace px
