@@ -190,7 +190,7 @@ Result<FramePacer::Step> FramePacer::step(std::uint64_t serial, std::uint64_t co
             // The last frame of this cost said what each row costs: a band stops before the
             // rows that were dear (a small mesh under much sky), never grows past the estimate.
             for (double sum = 0.0; m_rowsDone + rows < height; ++rows) {
-                sum += std::max(rowMs, m_rowMs[std::size_t(m_rowsDone + rows)]);
+                sum += std::max(rowMs, m_rowMs[std::size_t(m_rowsDone) + std::size_t(rows)]);
                 if (sum > left)
                     break;
             }
