@@ -99,4 +99,15 @@ inline bool dropFiles(QWidget* target, const QStringList& files) {
     return drop.isAccepted();
 }
 
+// Counts the events of one type that reach the objects it is installed on.
+struct EventCounter : QObject {
+    explicit EventCounter(QEvent::Type counted) : type(counted) {}
+    QEvent::Type type;
+    int count = 0;
+    bool eventFilter(QObject*, QEvent* e) override {
+        count += e->type() == type ? 1 : 0;
+        return false;
+    }
+};
+
 } // namespace px::studio::test

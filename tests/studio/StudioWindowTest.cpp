@@ -231,20 +231,14 @@ private slots:
 
         FramePacer::setBudgetMs(3.0);
         const auto restore = qScopeGuard([] { FramePacer::setBudgetMs(30.0); });
-        struct PaintCounter : QObject {
-            int paints = 0;
-            bool eventFilter(QObject*, QEvent* e) override {
-                paints += e->type() == QEvent::Paint ? 1 : 0;
-                return false;
-            }
-        } counter;
-        preview->installEventFilter(&counter);
+        EventCounter paints(QEvent::Paint);
+        preview->installEventFilter(&paints);
         int frames = preview->framesRendered();
         preview->setScene(preview->scene()); // a new frame of the same picture
         QVERIFY(waitForFrame(preview, frames));
         QCOMPARE(preview->framesRendered(), frames + 1);
-        QVERIFY2(counter.paints >= 4, qPrintable(QString::number(counter.paints)));
-        preview->removeEventFilter(&counter);
+        QVERIFY2(paints.count >= 4, qPrintable(QString::number(paints.count)));
+        preview->removeEventFilter(&paints);
         // The same picture as drawn at once, offscreen at the same size.
         const QImage inBands = preview->grabFramebuffer();
         Result<Image> atOnce = preview->renderImage(preview->scene(), inBands.size());
@@ -271,16 +265,10 @@ private slots:
             QVERIFY(waitForFigures(previews[i]));
         }
         QTest::qWait(0); // the layout settles once with the first figures' room reserved
-        struct ResizeCounter : QObject {
-            int resizes = 0;
-            bool eventFilter(QObject*, QEvent* e) override {
-                resizes += e->type() == QEvent::Resize ? 1 : 0;
-                return false;
-            }
-        } counter;
+        EventCounter resizes(QEvent::Resize);
         const QSize sizes[2] = {previews[0]->size(), previews[1]->size()};
         for (PreviewWidget* p : previews)
-            p->installEventFilter(&counter);
+            p->installEventFilter(&resizes);
         // New figures in one view, then in both with a deeper relief.
         PreviewScene heat = previews[0]->scene();
         heat.overlays.heatMap = true;
@@ -291,8 +279,8 @@ private slots:
             QVERIFY(waitForFigures(p));
         QCoreApplication::processEvents();
         for (PreviewWidget* p : previews)
-            p->removeEventFilter(&counter);
-        QCOMPARE(counter.resizes, 0);
+            p->removeEventFilter(&resizes);
+        QCOMPARE(resizes.count, 0);
         QCOMPARE(previews[0]->size(), sizes[0]);
         QCOMPARE(previews[1]->size(), sizes[1]);
         for (int i = 0; i < 2; ++i) {

@@ -172,14 +172,13 @@ void MapRow::refresh(const DocumentState& state) {
     m_shownTexels = texels;
     m_shownSide = side;
     ++m_thumbnailSerial;
-    const auto make = withMap(a, m_kind, [side](const auto& map) {
+    std::size_t texelCount = 0;
+    const auto make = withMap(a, m_kind, [side, &texelCount](const auto& map) {
+        texelCount = std::size_t(map.width) * std::size_t(map.height);
         // A copy shares the texels (SharedTexels): the job reads them on another thread.
         return std::function<QImage()>([map, side] { return thumbnail(map, side); });
     });
-    const std::size_t count = withMap(a, m_kind, [](const auto& map) {
-        return std::size_t(map.width) * std::size_t(map.height);
-    });
-    if (count <= kThumbnailOnGuiThread) {
+    if (texelCount <= kThumbnailOnGuiThread) {
         showThumbnail(make(), ratio);
         return;
     }

@@ -1,6 +1,7 @@
 #include "preview/PreviewRenderer.h"
 
 #include "jobs/MapUpload.h"
+#include "parallax/io/Fnv1a.h"
 #include "parallax/render/GpuEnvironment.h" // parallax-render
 #include "parallax/render/Renderer.h"       // parallax-render
 #include "preview/ErrorStats.h"
@@ -364,8 +365,8 @@ Result<FramePacer::Step> PreviewRenderer::drawStep(const PreviewScene& scene, st
     }
     // What the cost per pixel depends on beyond the camera and the sliders.
     const Impl& d = *m_impl;
-    std::uint64_t key = 1469598103934665603ull;
-    auto mix = [&key](std::uint64_t v) { key = (key ^ v) * 1099511628211ull; };
+    std::uint64_t key = kFnv1aOffset;
+    auto mix = [&key](std::uint64_t v) { key = fnv1a(&v, sizeof v, key); };
     mix(static_cast<std::uint64_t>(scene.material.technique));
     mix(scene.overlays.wipe ? 1 + static_cast<std::uint64_t>(scene.overlays.wipeTechnique) : 0);
     mix(reinterpret_cast<std::uintptr_t>(d.gpu));

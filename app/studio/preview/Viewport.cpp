@@ -191,13 +191,12 @@ void Viewport::pushScene() {
 }
 
 QString Viewport::statsText() const {
-    return m_figures.join(QStringLiteral("<br>"));
+    return QStringLiteral("<b>%1</b>").arg(m_figureName) + m_figures.join(QStringLiteral("<br>"));
 }
 
 void Viewport::showStats() {
-    const QString name =
-        QString::fromUtf8(info(m_document->state().view(m_index).technique).name.data());
-    m_figures = QStringList{QStringLiteral("<b>%1</b>").arg(name)};
+    m_figureName = QString::fromUtf8(info(m_document->state().view(m_index).technique).name.data());
+    m_figures = QStringList{QString()};
     if (m_preview) {
         const PreviewStats& st = m_preview->stats();
         if (st.frameMs > 0)
@@ -222,28 +221,26 @@ void Viewport::showStats() {
 }
 
 void Viewport::fitStats() {
-    // Each line cut to the label's width; only the technique's name, first, is marked up.
+    // Each line cut to the label's width, the first after the technique's name in bold.
     const int width = m_stats->contentsRect().width();
     QFont bold = m_stats->font();
     bold.setBold(true);
     const QFontMetrics plain(m_stats->font()), strong(bold);
+    const int nameWidth = strong.horizontalAdvance(m_figureName);
     QStringList shown;
     for (const QString& line : m_figures) {
-        const bool named = line.startsWith(QLatin1String("<b>"));
-        const qsizetype close = named ? line.indexOf(QLatin1String("</b>")) : 0;
-        const QString head = named ? line.mid(3, close - 3) : QString();
-        const QString rest = named ? line.mid(close + 4) : line;
-        const int headWidth = strong.horizontalAdvance(head);
-        QString fitted = strong.elidedText(head, Qt::ElideRight, width);
-        fitted = fitted.isEmpty() ? fitted : QStringLiteral("<b>%1</b>").arg(fitted);
-        if (headWidth < width)
-            fitted += plain.elidedText(rest, Qt::ElideRight, width - headWidth).toHtmlEscaped();
+        const bool first = shown.isEmpty();
+        const int room = first ? width - nameWidth : width;
+        QString fitted =
+            room > 0 ? plain.elidedText(line, Qt::ElideRight, room).toHtmlEscaped() : QString();
+        if (first)
+            fitted.prepend(QStringLiteral("<b>%1</b>")
+                               .arg(strong.elidedText(m_figureName, Qt::ElideRight, width)));
         shown << fitted;
     }
     m_stats->setText(shown.join(QStringLiteral("<br>")));
-    QString whole = m_figures.join(QLatin1Char('\n'));
-    whole.remove(QStringLiteral("<b>")).remove(QStringLiteral("</b>"));
-    m_stats->setToolTip(whole + QStringLiteral("\n\n") + figuresExplained());
+    m_stats->setToolTip(m_figureName + m_figures.join(QLatin1Char('\n')) + QStringLiteral("\n\n") +
+                        figuresExplained());
 }
 
 } // namespace px::studio

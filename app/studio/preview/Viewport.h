@@ -71,7 +71,8 @@ private:
     PreviewWidget* m_preview = nullptr;
     PreviewPlaceholder* m_placeholder = nullptr;
     QLabel* m_stats;
-    QStringList m_figures; // whole (rich text); m_stats shows each line cut to its width
+    QString m_figureName;  // the technique's, shown first in bold
+    QStringList m_figures; // whole, plain; the first follows the name; m_stats cuts each line
 };
 
 } // namespace px::studio

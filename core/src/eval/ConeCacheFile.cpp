@@ -3,6 +3,7 @@
 #include "parallax/Version.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/Fnv1a.h"
 
 #include <algorithm>
 #include <array>
@@ -29,15 +30,6 @@ struct Header {
     std::uint64_t baker;
     std::uint64_t payload; // FNV-1a of the texels' bytes
 };
-
-std::uint64_t fnv(const void* data, std::size_t bytes, std::uint64_t h = 0xcbf29ce484222325ULL) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t k = 0; k < bytes; ++k) {
-        h ^= p[k];
-        h *= 0x100000001b3ULL;
-    }
-    return h;
-}
 
 Header headerFor(const ConeCacheKey& key) {
     Header h{};
@@ -112,7 +104,7 @@ std::optional<ConeMap> readCachedCone(const fs::path& dir, const ConeCacheKey& k
     const std::size_t bytes = map.sqrtRatio.size() * sizeof(float);
     if (!in.read(reinterpret_cast<char*>(map.sqrtRatio.data()), std::streamsize(bytes)) ||
         in.peek() != std::ifstream::traits_type::eof() ||
-        fnv(map.sqrtRatio.data(), bytes) != found.payload)
+        fnv1a(map.sqrtRatio.data(), bytes) != found.payload)
         return std::nullopt;
     std::error_code ec;
     fs::last_write_time(path, fs::file_time_type::clock::now(), ec); // its last use, for trim
@@ -127,7 +119,7 @@ void writeCachedCone(const fs::path& dir, const ConeCacheKey& key, const ConeMap
         return;
     Header h = headerFor(key);
     const std::size_t bytes = map.sqrtRatio.size() * sizeof(float);
-    h.payload = fnv(map.sqrtRatio.data(), bytes);
+    h.payload = fnv1a(map.sqrtRatio.data(), bytes);
     std::string contents(sizeof h + bytes, '\0');
     std::memcpy(contents.data(), &h, sizeof h);
     std::memcpy(contents.data() + sizeof h, map.sqrtRatio.data(), bytes);
@@ -148,11 +140,11 @@ std::uint64_t coneBakerFingerprint() {
                 h = (x >= 9 && x <= 11 && y >= 12 && y <= 14) ? 0.0f : h;
                 field.at(x, y) = h;
             }
-        std::uint64_t h = fnv(kVersion, std::strlen(kVersion));
+        std::uint64_t h = fnv1a(kVersion, std::strlen(kVersion));
         for (WrapMode wrap : {WrapMode::Repeat, WrapMode::Clamp})
             for (ConeKind kind : {ConeKind::Conservative, ConeKind::Relaxed}) {
                 const ConeMap cone = bakeConeMap(field, wrap, kind);
-                h = fnv(cone.sqrtRatio.data(), cone.sqrtRatio.size() * sizeof(float), h);
+                h = fnv1a(cone.sqrtRatio.data(), cone.sqrtRatio.size() * sizeof(float), h);
             }
         return h;
     }();

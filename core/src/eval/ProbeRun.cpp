@@ -2,6 +2,7 @@
 
 #include "ConeCacheFile.h"
 #include "parallax/bake/ConeMapBaker.h"
+#include "parallax/io/Fnv1a.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -36,16 +37,9 @@ ProbeCache& cache() {
     return instance;
 }
 
-// FNV-1a over the texels' bytes: equal maps share their measures, whatever file they came from.
+// Over the texels' bytes: equal maps share their measures, whatever file they came from.
 std::uint64_t contentHash(const HeightField& field) {
-    std::uint64_t h = 0xcbf29ce484222325ULL;
-    const auto* bytes = reinterpret_cast<const unsigned char*>(field.texels.data());
-    const std::size_t n = field.texels.size() * sizeof(float);
-    for (std::size_t k = 0; k < n; ++k) {
-        h ^= bytes[k];
-        h *= 0x100000001b3ULL;
-    }
-    return h;
+    return fnv1a(field.texels.data(), field.texels.size() * sizeof(float));
 }
 
 std::string number(double value) {

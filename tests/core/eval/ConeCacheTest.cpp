@@ -1,7 +1,7 @@
 // Cone maps kept on disk between recommendations (RecommendConfig::cacheDir): a second run reads
 // them instead of baking and answers the same; a damaged file is baked again and replaced; a
-// cache that cannot be written costs nothing but time; the oldest files go first when the cache
-// is full, and files it did not name are never touched.
+// cache that cannot be written (or a full disk) costs nothing but time; the oldest files go first
+// when the cache is full, and files it did not name are never touched.
 
 #include "parallax/eval/Recommendation.h"
 #include "parallax/sample/ProceduralMaps.h"
@@ -131,6 +131,36 @@ private slots:
         std::string text;
         std::getline(in, text);
         QCOMPARE(text, std::string("not a folder"));
+    }
+
+    // A full disk (the write fails part-way): the answer as without a cache, no file and no
+    // temporary left, and a kept file from before untouched.
+    void aFullDiskLeavesNothingBehind() {
+        QTemporaryDir dir;
+        const fs::path cache = dir.path().toStdString();
+        clearRecommendationCache();
+        Result<Recommendation> baked = recommend(configFor(m_stones, cache.string()));
+        QVERIFY(baked);
+        const std::vector<fs::path> before = filesIn(cache);
+        std::vector<std::uintmax_t> sizes;
+        sizes.reserve(before.size());
+        for (const fs::path& f : before)
+            sizes.push_back(fs::file_size(f));
+        qputenv("PX_TEST_FAIL_WRITE_AT", "1000");
+        const auto restore = qScopeGuard([] { qunsetenv("PX_TEST_FAIL_WRITE_AT"); });
+        clearRecommendationCache();
+        const HeightField other = makeProceduralMap(ProceduralMap::Stones, 48, 40, 5);
+        Result<Recommendation> full = recommend(configFor(other, cache.string()));
+        QVERIFY(full);
+        QCOMPARE(full->mapsBaked, 2);
+        QCOMPARE(filesIn(cache), before); // no new file, no temporary
+        for (std::size_t i = 0; i < before.size(); ++i)
+            QCOMPARE(fs::file_size(before[i]), sizes[i]);
+        clearRecommendationCache();
+        qunsetenv("PX_TEST_FAIL_WRITE_AT");
+        Result<Recommendation> plain = recommend(configFor(other, std::string()));
+        QVERIFY(plain);
+        QVERIFY(sameAnswer(*full, *plain));
     }
 
     void theOldestGoFirstAndOthersAreKept() {
