@@ -11,6 +11,7 @@
 #include "parallax/material/MaterialAssets.h"
 #include "parallax/material/MaterialFile.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -128,6 +129,7 @@ std::string toJson(const Recommendation& r, const RecommendConfig& c,
         const MeasuredSetting& m = r.measured[k];
         j << (k ? ",\n    " : "\n    ") << "{\"technique\": " << settingJson(m.setting)
           << ", \"meets\": " << (m.meets ? "true" : "false")
+          << ", \"dearer\": " << (m.dearer ? "true" : "false")
           << ", \"onFront\": " << (m.onFront ? "true" : "false")
           << ", \"angles\": " << anglesJson(m.angles) << "}";
     }
@@ -161,7 +163,12 @@ std::string toText(const Recommendation& r, const RecommendConfig& c,
             t << (k ? ", " : "") << r.maps[k];
         t << "\n  Pareto front (error against fetches at " << num(r.polarDeg.front())
           << " degrees): " << (r.chosen.onFront ? "the choice is on it" : "the choice is not on it")
-          << ", " << r.measured.size() << " settings measured\n";
+          << ", " << r.measured.size() << " settings measured";
+        const auto dearer = std::count_if(r.measured.begin(), r.measured.end(),
+                                          [](const MeasuredSetting& m) { return m.dearer; });
+        if (dearer > 0)
+            t << " (" << dearer << " of them given up once dearer than a setting that meets)";
+        t << "\n";
     }
     t << "  confidence: " << r.confidence << "\n";
     for (const EngineLayersAdvice& e : engines)

@@ -181,9 +181,12 @@ Result<EngineLayersAdvice> recommendEngineLayers(EngineMarch engine, const Recom
     if (Status s = validate(config); !s)
         return s.error();
     ProbeRun run(config, control);
-    auto measure = [&](int maxLayers) {
-        return run.measure(engineProbe(engine, rung(engine, maxLayers), *config.field, config.wrap),
-                           false);
+    auto measure = [&](int maxLayers) -> Result<std::vector<AngleMeasure>> {
+        Result<ProbeRun::Measured> m = run.measure(
+            engineProbe(engine, rung(engine, maxLayers), *config.field, config.wrap), false);
+        if (!m)
+            return m.error();
+        return std::move(m->angles);
     };
     auto meets = [&](const std::vector<AngleMeasure>& angles) {
         return angles.size() == run.polars().size() && angles.back().meets;

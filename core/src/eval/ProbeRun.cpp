@@ -16,6 +16,8 @@ namespace {
 struct ProbeCache {
     std::mutex mutex;
     std::map<std::string, AngleMeasure> angles;
+    // Angles given up mid-trace as dearer than a limit: a lower bound of their mean fetches.
+    std::map<std::string, double> fetchesAtLeast;
     std::map<std::string, std::shared_ptr<const std::vector<TraceResult>>> references;
     std::map<std::string, std::shared_ptr<const ConeMap>> cones;
     std::map<std::string, std::shared_ptr<const MaxMipPyramid>> pyramids;
@@ -23,6 +25,8 @@ struct ProbeCache {
     void trim() {
         if (angles.size() > 200000)
             angles.clear();
+        if (fetchesAtLeast.size() > 200000)
+            fetchesAtLeast.clear();
         if (references.size() > 256)
             references.clear();
         if (cones.size() > 8)
@@ -54,6 +58,7 @@ void clearProbeCache() {
     ProbeCache& c = cache();
     std::lock_guard lock(c.mutex);
     c.angles.clear();
+    c.fetchesAtLeast.clear();
     c.references.clear();
     c.cones.clear();
     c.pyramids.clear();
@@ -72,6 +77,7 @@ ProbeRun::ProbeRun(const RecommendConfig& config, const EvalControl& control)
     for (double a : config.azimuthDeg)
         m_mapKey += number(a) + ",";
     m_maps.height = config.field.get();
+    m_maps.heightMax = field.maxHeight();
     m_maps.wrap = config.wrap;
     m_cone = config.cone;
     m_relaxedCone = config.relaxedCone;
@@ -188,8 +194,8 @@ Result<const std::vector<TraceResult>*> ProbeRun::reference(std::size_t polarInd
     return slot.get();
 }
 
-Result<std::vector<AngleMeasure>> ProbeRun::measure(const Probe& probe, bool timeCpu) {
-    std::vector<AngleMeasure> angles;
+Result<ProbeRun::Measured> ProbeRun::measure(const Probe& probe, bool timeCpu, double costLimit) {
+    Measured out;
     std::optional<RangeTrace> trace;
     const HeightField& field = *m_config.field;
     for (std::size_t p = 0; p < m_polars.size(); ++p) {
@@ -198,11 +204,20 @@ Result<std::vector<AngleMeasure>> ProbeRun::measure(const Probe& probe, bool tim
         const std::string key =
             m_mapKey + "/p" + number(m_polars[p]) + "/" + probe.key + (timeCpu ? "/cpu" : "");
         std::optional<AngleMeasure> m;
+        double knownAtLeast = 0.0;
         {
             std::lock_guard lock(cache().mutex);
             auto it = cache().angles.find(key);
             if (it != cache().angles.end())
                 m = it->second;
+            auto partial = cache().fetchesAtLeast.find(key);
+            if (partial != cache().fetchesAtLeast.end())
+                knownAtLeast = partial->second;
+        }
+        if (!m && !timeCpu && knownAtLeast > costLimit) {
+            ++m_cached; // given up before, over a limit no higher than this one
+            out.dearer = true;
+            return out;
         }
         if (m) {
             ++m_cached;
@@ -217,8 +232,20 @@ Result<std::vector<AngleMeasure>> ProbeRun::measure(const Probe& probe, bool tim
             Result<const std::vector<TraceResult>*> ref = reference(p, probe.model);
             if (!ref)
                 return ref.error();
+            // Fetches bound the trace itself; ns per ray are known only once it is timed.
+            const double limit = timeCpu ? std::numeric_limits<double>::infinity() : costLimit;
+            double atLeast = 0.0;
             std::optional<std::vector<TraceResult>> hits =
-                traceSample(**sample, *trace, m_control.cancel);
+                traceSampleWithin(**sample, *trace, m_control.cancel, limit, atLeast);
+            if (!hits && atLeast > limit) {
+                ++m_measured;
+                std::lock_guard lock(cache().mutex);
+                cache().trim();
+                double& known = cache().fetchesAtLeast[key];
+                known = std::max(known, atLeast);
+                out.dearer = true;
+                return out;
+            }
             if (!hits)
                 return evaluationCancelled();
             m = measureAngle(**sample, *hits, **ref, field.width, field.height,
@@ -231,11 +258,15 @@ Result<std::vector<AngleMeasure>> ProbeRun::measure(const Probe& probe, bool tim
             cache().angles[key] = *m;
         }
         m->meets = meetsBudget(*m, m_config.budget);
-        angles.push_back(*m);
+        out.angles.push_back(*m);
         if (!m->meets)
             break;
+        if ((timeCpu ? m->cpuNsPerRay.value_or(0.0) : m->meanFetches) > costLimit) {
+            out.dearer = true;
+            break;
+        }
     }
-    return angles;
+    return out;
 }
 
 } // namespace px

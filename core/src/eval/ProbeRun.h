@@ -8,6 +8,7 @@
 #include "RayProbe.h"
 #include "parallax/bake/MaxMipPyramid.h"
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -33,7 +34,15 @@ public:
 
     // The angles of one candidate, steepest first, up to and including the first that fails the
     // budget (all of them if none does). timeCpu: also the one-thread ns per ray.
-    Result<std::vector<AngleMeasure>> measure(const Probe& probe, bool timeCpu);
+    // costLimit: stop, `dearer` set, at the first angle whose cost (mean fetches, or with timeCpu
+    // ns per ray) is over it, mid-trace where the fetches made so far already are; an angle given
+    // up mid-trace is left out of `angles` and of the cache.
+    struct Measured {
+        std::vector<AngleMeasure> angles;
+        bool dearer = false;
+    };
+    Result<Measured> measure(const Probe& probe, bool timeCpu,
+                             double costLimit = std::numeric_limits<double>::infinity());
 
     int cachedAngles() const { return m_cached; }
     int measuredAngles() const { return m_measured; }

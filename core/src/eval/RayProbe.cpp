@@ -70,18 +70,40 @@ RangeTrace tracerRange(const Tracer& tracer) {
 
 std::optional<std::vector<TraceResult>> traceSample(const RaySample& rays, const RangeTrace& trace,
                                                     const std::atomic<bool>* cancel) {
+    double fetches = 0.0;
+    return traceSampleWithin(rays, trace, cancel, std::numeric_limits<double>::infinity(), fetches);
+}
+
+std::optional<std::vector<TraceResult>>
+traceSampleWithin(const RaySample& rays, const RangeTrace& trace, const std::atomic<bool>* cancel,
+                  double maxMeanFetches, double& fetchesAtLeast) {
     std::vector<TraceResult> hits(rays.uv0.size());
     constexpr std::size_t kBlock = 256;
     const std::size_t blocks = (hits.size() + kBlock - 1) / kBlock;
-    std::atomic<bool> stopped{false};
+    // Fetches are whole numbers: their running sum is exact, so "over the limit" is the same
+    // verdict whichever blocks have run.
+    const double limit = maxMeanFetches * static_cast<double>(hits.size());
+    std::atomic<std::int64_t> fetches{0};
+    std::atomic<bool> stopped{false}, over{false};
     tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
         if (stopped.load(std::memory_order_relaxed) ||
             (cancel && cancel->load(std::memory_order_relaxed))) {
             stopped.store(true, std::memory_order_relaxed);
             return;
         }
-        trace(rays, b * kBlock, std::min(hits.size(), (b + 1) * kBlock), hits);
+        const std::size_t begin = b * kBlock, end = std::min(hits.size(), (b + 1) * kBlock);
+        trace(rays, begin, end, hits);
+        std::int64_t sum = 0;
+        for (std::size_t k = begin; k < end; ++k)
+            sum += hits[k].fetches;
+        if (static_cast<double>(fetches.fetch_add(sum, std::memory_order_relaxed) + sum) > limit) {
+            over.store(true, std::memory_order_relaxed);
+            stopped.store(true, std::memory_order_relaxed);
+        }
     });
+    fetchesAtLeast = static_cast<double>(fetches.load()) / static_cast<double>(hits.size());
+    if (over.load()) // over the limit even where dividing by the ray count rounds down to it
+        fetchesAtLeast = std::max(fetchesAtLeast, std::nextafter(maxMeanFetches, INFINITY));
     if (stopped.load())
         return std::nullopt;
     return hits;

@@ -39,6 +39,15 @@ RangeTrace tracerRange(const Tracer& tracer);
 std::optional<std::vector<TraceResult>> traceSample(const RaySample& rays, const RangeTrace& trace,
                                                     const std::atomic<bool>* cancel);
 
+// The same, but it gives up (nothing returned, `fetchesAtLeast` over the limit) as soon as the
+// rays traced so far have made more than maxMeanFetches x (all the rays) fetches: the mean over
+// all of them can only be higher, and fetchesAtLeast is a lower bound of it. Whether it gives up
+// does not depend on the order the blocks ran in: it does exactly when the whole sample's sum is
+// over the limit.
+std::optional<std::vector<TraceResult>>
+traceSampleWithin(const RaySample& rays, const RangeTrace& trace, const std::atomic<bool>* cancel,
+                  double maxMeanFetches, double& fetchesAtLeast);
+
 // Nanoseconds per ray on one thread (the fastest of two passes over the sample).
 double timeSample(const RaySample& rays, const RangeTrace& trace);
 

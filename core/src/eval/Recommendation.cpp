@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace px {
 namespace {
@@ -164,40 +165,57 @@ Result<Recommendation> recommend(const RecommendConfig& config, const EvalContro
     r.polarDeg = run.polars();
     r.raysPerAngle = run.raysPerAngle();
     std::vector<std::size_t> candidates; // per ladder, the first rung that meets
+    // The cost of the cheapest meeting setting so far: a setting found dearer at any angle cannot
+    // be chosen, so its measure stops there (GPU time is only known at the end).
+    double bestCost = std::numeric_limits<double>::infinity();
     auto measureRung = [&](const BenchSetting& s) -> Result<std::size_t> {
-        Result<std::vector<AngleMeasure>> angles =
-            run.measure(techniqueProbe(s, run.maps(), config.scale), timeCpu);
-        if (!angles)
-            return angles.error();
+        const double limit = config.cost == CostMeasure::GpuTime || !config.giveUpDearer
+                                 ? std::numeric_limits<double>::infinity()
+                                 : bestCost;
+        Result<ProbeRun::Measured> measured =
+            run.measure(techniqueProbe(s, run.maps(), config.scale), timeCpu, limit);
+        if (!measured)
+            return measured.error();
         MeasuredSetting m;
         m.setting = s;
-        m.angles = std::move(*angles);
-        m.meets = m.angles.size() == run.polars().size() && m.angles.back().meets;
+        m.angles = std::move(measured->angles);
+        m.dearer = measured->dearer;
+        m.meets = !m.dearer && m.angles.size() == run.polars().size() && m.angles.back().meets;
         r.measured.push_back(std::move(m));
         return r.measured.size() - 1;
     };
     for (const std::vector<BenchSetting>& ladder : ladders) {
         // Quality rises along a ladder: find its first meeting rung by bisection, the top first
-        // (if the best rung fails, none will do).
+        // (if the best rung fails, none will). A rung found dearer than the best so far is taken
+        // as meeting for the bisection: if it does not, the rung that does is dearer still
+        // (cost rises along a ladder), so the ladder has nothing to offer either way.
         Result<std::size_t> top = measureRung(ladder.back());
         if (!top)
             return top.error();
-        if (!r.measured[*top].meets)
+        if (!r.measured[*top].meets && !r.measured[*top].dearer)
             continue;
-        std::size_t lo = 0, hi = ladder.size() - 1, best = *top;
+        std::optional<std::size_t> best;
+        if (r.measured[*top].meets)
+            best = *top;
+        std::size_t lo = 0, hi = ladder.size() - 1;
         while (lo < hi) {
             const std::size_t mid = lo + (hi - lo) / 2;
             Result<std::size_t> at = measureRung(ladder[mid]);
             if (!at)
                 return at.error();
-            if (r.measured[*at].meets) {
+            const MeasuredSetting& m = r.measured[*at];
+            if (m.meets || m.dearer) {
                 hi = mid;
-                best = *at;
+                best = m.meets ? std::optional(*at) : std::nullopt;
             } else {
                 lo = mid + 1;
             }
         }
-        candidates.push_back(best);
+        if (!best)
+            continue;
+        candidates.push_back(*best);
+        if (config.cost != CostMeasure::GpuTime)
+            bestCost = std::min(bestCost, costOf(r.measured[*best], config.cost));
     }
 
     for (std::size_t k : candidates) {
@@ -226,10 +244,15 @@ Result<Recommendation> recommend(const RecommendConfig& config, const EvalContro
         }
     }
     // The Pareto front at the steepest angle, over every setting measured.
+    // Settings given up at it (dearer) have no figures there and are left out.
     for (MeasuredSetting& m : r.measured) {
+        if (m.angles.empty())
+            continue;
         const AngleMeasure& a = m.angles.front();
         m.onFront =
             std::none_of(r.measured.begin(), r.measured.end(), [&](const MeasuredSetting& o) {
+                if (o.angles.empty())
+                    return false;
                 const AngleMeasure& b = o.angles.front();
                 return (b.meanFetches <= a.meanFetches && b.p99 <= a.p99) &&
                        (b.meanFetches < a.meanFetches || b.p99 < a.p99);

@@ -44,7 +44,7 @@ Result<Tracer> Tracer::create(const TraceMaps& maps, Technique technique, const 
     tracer.m_technique = technique;
     tracer.m_params = params;
     tracer.m_scale = heightScale;
-    tracer.m_heightMax = maps.height->maxHeight();
+    tracer.m_heightMax = maps.heightMax ? *maps.heightMax : maps.height->maxHeight();
 
     const TechniqueInfo& ti = info(technique);
     const HeightField& field = *maps.height;

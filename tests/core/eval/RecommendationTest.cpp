@@ -12,6 +12,7 @@
 #include "parallax/trace/TraceScene.h"
 
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -29,6 +30,8 @@ private slots:
     void meetsBudgetAtLeastCostAgainstFullSweep();
     void maxBudgetStatementHoldsOnFullMeasurement();
     void sameInputSameAnswerAndCached();
+    void givingUpDearerSettingsChangesNothing_data();
+    void givingUpDearerSettingsChangesNothing();
     void invalidInput();
 };
 
@@ -318,6 +321,62 @@ void RecommendationTest::sameInputSameAnswerAndCached() {
     config.scale = 0.08f;
     Result<Recommendation> d = recommend(config);
     QVERIFY(d.ok() && d->measuredAngles > 0);
+}
+
+void RecommendationTest::givingUpDearerSettingsChangesNothing_data() {
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<unsigned>("seed");
+    QTest::addColumn<double>("budget");
+    QTest::newRow("bricks 0.5") << "bricks" << 21u << 0.5;
+    QTest::newRow("spiky 0.5") << "spiky" << 23u << 0.5;
+    QTest::newRow("stepped 0.25") << "stepped" << 25u << 0.25;
+    QTest::newRow("8-bit 1") << "8bit" << 27u << 1.0;
+}
+
+void RecommendationTest::givingUpDearerSettingsChangesNothing() {
+    // Measuring every visited setting in full, and giving up on the dearer ones, choose the same
+    // setting with the same figures; giving up traces fewer rays.
+    QFETCH(QString, kind);
+    QFETCH(unsigned, seed);
+    QFETCH(double, budget);
+    RecommendConfig config = testConfig(testMap(kind, seed));
+    config.budget.texels = budget;
+    config.giveUpDearer = false;
+    Result<Recommendation> full = recommend(config);
+    QVERIFY(full.ok() && full->found);
+    QVERIFY(std::none_of(full->measured.begin(), full->measured.end(),
+                         [](const MeasuredSetting& m) { return m.dearer; }));
+    clearRecommendationCache();
+    config.giveUpDearer = true;
+    Result<Recommendation> quick = recommend(config);
+    QVERIFY(quick.ok() && quick->found);
+    QCOMPARE(keyOf(quick->chosen.setting), keyOf(full->chosen.setting));
+    QCOMPARE(quick->chosen.cost, full->chosen.cost);
+    QCOMPARE(quick->chosen.angles.size(), full->chosen.angles.size());
+    for (std::size_t k = 0; k < full->chosen.angles.size(); ++k)
+        QCOMPARE(quick->chosen.angles[k].p99Bound, full->chosen.angles[k].p99Bound);
+    const auto dearer = std::count_if(quick->measured.begin(), quick->measured.end(),
+                                      [](const MeasuredSetting& m) { return m.dearer; });
+    qInfo("%s: %d of %d settings given up; angles traced %d, in full %d", qPrintable(kind),
+          int(dearer), int(quick->measured.size()), quick->measuredAngles, full->measuredAngles);
+    QVERIFY(dearer > 0);
+    QVERIFY(quick->measuredAngles < full->measuredAngles);
+    // A setting given up that the full run measured too either failed there or cost more.
+    int checked = 0;
+    for (const MeasuredSetting& m : quick->measured) {
+        if (!m.dearer)
+            continue;
+        for (const MeasuredSetting& f : full->measured) {
+            if (keyOf(f.setting) != keyOf(m.setting))
+                continue;
+            ++checked;
+            double cost = 0.0;
+            for (const AngleMeasure& a : f.angles)
+                cost = std::max(cost, a.meanFetches);
+            QVERIFY2(!f.meets || cost > full->chosen.cost, keyOf(m.setting).c_str());
+        }
+    }
+    QVERIFY(checked > 0);
 }
 
 void RecommendationTest::invalidInput() {

@@ -68,6 +68,10 @@ struct RecommendConfig {
     int raysPerSide = 32;              // each azimuth: raysPerSide^2 stratified, jittered rays
     double confidence = 0.99;          // of the bounds the budget is judged on
     std::vector<Technique> techniques; // empty: every technique that traces rays
+    // Stop measuring a setting once it is dearer than one already found to meet (the answer is
+    // the same, since cost rises along a ladder); false measures every setting visited in full:
+    // the check of that, and the benchmark's baseline.
+    bool giveUpDearer = true;
     // Derived maps the caller already has (the editor, a material's files); others are baked once
     // and cached by content.
     std::shared_ptr<const ConeMap> cone;
@@ -97,7 +101,11 @@ struct MeasuredSetting {
     BenchSetting setting;
     std::vector<AngleMeasure> angles; // steepest first; ends at the first angle that fails
     bool meets = false;               // at every angle
-    double cost = 0.0;                // max over the angles on the chosen measure (meeting ones)
+    // Given up at an angle whose cost was over that of a setting already found to meet (it cannot
+    // be chosen): meets is then unknown and false, and that angle is missing if it was given up
+    // mid-trace.
+    bool dearer = false;
+    double cost = 0.0; // max over the angles on the chosen measure (meeting ones)
     std::optional<double> gpuMsPerFrame;
     bool onFront = false; // Pareto front of error against fetches at the steepest angle
 };

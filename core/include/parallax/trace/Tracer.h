@@ -11,6 +11,7 @@
 
 #include <glm/vec2.hpp>
 #include <memory>
+#include <optional>
 
 namespace px {
 
@@ -30,6 +31,9 @@ struct TraceMaps {
     const ConeMap* cone = nullptr;
     const ConeMap* relaxedCone = nullptr;
     const MaxMipPyramid* pyramid = nullptr;
+    // The height map's maximum if the caller knows it (a recommendation makes dozens of tracers
+    // of one map); else create() scans the map for it.
+    std::optional<float> heightMax;
 };
 
 // Owns the derived maps a technique needs that the caller did not supply (baked on demand).
