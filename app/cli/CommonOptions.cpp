@@ -2,6 +2,7 @@
 
 #include "parallax/material/MaterialNames.h"
 
+#include <cstdlib>
 #include <functional>
 
 namespace px::cli {
@@ -102,6 +103,26 @@ void KernelOptions::addTo(CLI::App& command) {
 
 KernelFlavour KernelOptions::flavour() const {
     return shader::parseKernelFlavour(name).value_or(KernelFlavour::Production);
+}
+
+void ConeCacheOptions::addTo(CLI::App& command) {
+    command.add_option("--cache", value,
+                       "Folder keeping baked cone maps between runs, or 'off' (default: "
+                       "$XDG_CACHE_HOME/parallax-studio/cone-maps)");
+}
+
+std::string ConeCacheOptions::folder() const {
+    if (value == "off")
+        return {};
+    if (!value.empty())
+        return value;
+    const char* xdg = std::getenv("XDG_CACHE_HOME");
+    const char* home = std::getenv("HOME");
+    if (xdg && *xdg)
+        return std::string(xdg) + "/parallax-studio/cone-maps";
+    if (home && *home)
+        return std::string(home) + "/.cache/parallax-studio/cone-maps";
+    return {};
 }
 
 } // namespace px::cli

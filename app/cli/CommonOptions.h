@@ -55,4 +55,15 @@ struct KernelOptions {
     KernelFlavour flavour() const;
 };
 
+// Where technique auto and `recommend` keep baked cone maps between runs (docs/recommend.md).
+struct ConeCacheOptions {
+    std::string value; // empty: the user's cache folder; "off": none
+
+    // Adds --cache DIR|off.
+    void addTo(CLI::App& command);
+    // The folder: $XDG_CACHE_HOME/parallax-studio/cone-maps, else ~/.cache/..., by default;
+    // empty for "off", or when neither variable is set.
+    std::string folder() const;
+};
+
 } // namespace px::cli

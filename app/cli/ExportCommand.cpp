@@ -33,6 +33,7 @@ struct ExportCliOptions {
     int heightBits = 16;
     int normalBits = 8;
     std::string green = "opengl";
+    ConeCacheOptions cache; // technique auto's bakes
 };
 
 std::vector<std::string> names(std::span<const std::string_view> list) {
@@ -49,6 +50,7 @@ ExportOptions exportOptions(const ExportCliOptions& o, const std::string& out) {
     options.packageGreen = *parseNormalGreen(o.green);
     options.load.allowLarge = o.height.allowLarge;
     options.load.normalize = o.height.normalize;
+    options.coneCacheDir = o.cache.folder();
     return options;
 }
 
@@ -227,6 +229,7 @@ Action addExportCommand(CLI::App& app) {
     cmd->add_option("--out", o->out, "Output folder (with --batch: one sub-folder per material)")
         ->required();
     cmd->add_flag("--force", o->force, "Replace an earlier export in the output folder");
+    o->cache.addTo(*cmd);
     cmd->add_option("--height-bits", o->heightBits, "Height map: 16 (PNG) or 32 (float EXR)")
         ->check(CLI::IsMember({16, 32}));
     cmd->add_option("--normal-bits", o->normalBits, "Normal map: 8 or 16-bit PNG")

@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
 #include <sstream>
 #include <utility>
@@ -44,20 +43,8 @@ struct RecommendOptions {
     bool hdrp = false;
     bool json = false;
     std::string out = "-";
-    std::string cache; // empty: the user's cache folder; "off": none
+    ConeCacheOptions cache;
 };
-
-// Where baked cone maps are kept between runs: $XDG_CACHE_HOME/parallax-studio/cone-maps, else
-// ~/.cache/...; nothing when neither is set.
-std::string defaultConeCache() {
-    const char* xdg = std::getenv("XDG_CACHE_HOME");
-    const char* home = std::getenv("HOME");
-    if (xdg && *xdg)
-        return std::string(xdg) + "/parallax-studio/cone-maps";
-    if (home && *home)
-        return std::string(home) + "/.cache/parallax-studio/cone-maps";
-    return {};
-}
 
 std::string num(double value, const char* pattern = "%.4g") {
     if (!std::isfinite(value))
@@ -134,7 +121,10 @@ std::string toJson(const Recommendation& r, const RecommendConfig& c,
           << ", \"angles\": " << anglesJson(m.angles) << "}";
     }
     j << "],\n  \"confidence\": " << quoted(r.confidence)
-      << ",\n  \"raysPerAngle\": " << r.raysPerAngle;
+      << ",\n  \"raysPerAngle\": " << r.raysPerAngle
+      << ",\n  \"coneMaps\": {\"baked\": " << r.mapsBaked << ", \"read\": " << r.mapsFromDisk
+      << ", \"cache\": " << quoted(c.cacheDir) << ", \"notKept\": " << quoted(r.cacheProblem)
+      << "}";
     for (const EngineLayersAdvice& e : engines) {
         j << ",\n  " << quoted(e.engine == EngineMarch::Godot ? "godot" : "hdrp")
           << ": {\"found\": " << (e.found ? "true" : "false");
@@ -173,9 +163,13 @@ std::string toText(const Recommendation& r, const RecommendConfig& c,
     t << "  confidence: " << r.confidence << "\n";
     for (const EngineLayersAdvice& e : engines)
         t << "  " << e.note << "\n";
-    if (!c.cacheDir.empty() && r.mapsBaked + r.mapsFromDisk > 0)
+    if (!c.cacheDir.empty() && r.mapsBaked + r.mapsFromDisk > 0) {
         t << "  cone maps: " << r.mapsBaked << " baked, " << r.mapsFromDisk << " read from "
-          << c.cacheDir << "\n";
+          << c.cacheDir;
+        if (!r.cacheProblem.empty())
+            t << "; the baked ones were not kept (" << r.cacheProblem << ")";
+        t << "\n";
+    }
     return t.str();
 }
 
@@ -186,9 +180,7 @@ int runRecommend(const RecommendOptions& o) {
         return fail(
             "give the budget in texels (--budget) or in pixels (--budget-pixels), not both");
     RecommendConfig config;
-    config.cacheDir = o.cache == "off"  ? std::string()
-                      : o.cache.empty() ? defaultConeCache()
-                                        : o.cache;
+    config.cacheDir = o.cache.folder();
     config.maxPolarDeg = o.maxPolar;
     config.raysPerSide = o.rays;
     config.budget.metric = *parseBudgetMetric(o.metric);
@@ -319,9 +311,7 @@ Action addRecommendCommand(CLI::App& app) {
     cmd->add_flag("--godot", o->godot, "Also the fewest Godot deep-parallax layers that meet it");
     cmd->add_flag("--hdrp", o->hdrp,
                   "Also the fewest Unity HDRP parallax-occlusion steps that meet it");
-    cmd->add_option("--cache", o->cache,
-                    "Folder keeping baked cone maps between runs, or 'off' (default: "
-                    "$XDG_CACHE_HOME/parallax-studio/cone-maps)");
+    o->cache.addTo(*cmd);
     cmd->add_flag("--json", o->json, "Write JSON instead of text");
     cmd->add_option("--out", o->out, "Output file (default: standard output)");
     return [o] { return runRecommend(*o); };

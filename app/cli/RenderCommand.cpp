@@ -57,6 +57,7 @@ struct RenderOptions {
     int timeFrames = 0;
     int turntable = 0; // frames around the mesh; 0: one picture
     KernelOptions kernels;
+    ConeCacheOptions cache; // technique auto's bakes
     std::string out;
 };
 
@@ -160,8 +161,9 @@ Result<Material> materialFrom(const RenderOptions& o, MaterialAssets& assets) {
         if (m.autoQuality) {
             // Technique "auto": measured on this material's height map, as export resolves it;
             // then only the cone maps the chosen setting reads are kept.
-            Result<ResolvedAuto> resolved = resolveAutoTechnique(m, loaded->height, loaded->cone,
-                                                                 loaded->relaxedCone, o.material);
+            Result<ResolvedAuto> resolved =
+                resolveAutoTechnique(m, loaded->height, loaded->cone, loaded->relaxedCone,
+                                     o.material, std::nullopt, o.cache.folder());
             if (!resolved)
                 return resolved.error();
             m = resolved->material;
@@ -438,6 +440,7 @@ Action addRenderCommand(CLI::App& app) {
                     "Render this many frames with the camera orbiting once: OUT-000.png, ...")
         ->check(CLI::Range(1, 3600));
     o->kernels.addTo(*cmd);
+    o->cache.addTo(*cmd);
     cmd->add_option("--out", o->out, "Output image (.png)")->required();
     return [o] { return runRender(*o); };
 }

@@ -15,7 +15,8 @@ MapSet withAutoInputs(const Material& material, MapSet used) {
 Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const HeightField& height,
                                           const ConeMap& cone, const ConeMap& relaxedCone,
                                           const std::string& source,
-                                          std::optional<EngineMarch> engine) {
+                                          std::optional<EngineMarch> engine,
+                                          const std::string& coneCacheDir) {
     ResolvedAuto resolved{material, {}, std::nullopt, std::nullopt};
     if (!material.autoQuality)
         return resolved;
@@ -26,6 +27,7 @@ Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const Height
     config.name = source;
     config.wrap = material.wrap;
     config.scale = material.heightScale;
+    config.cacheDir = coneCacheDir;
     config.maxPolarDeg = material.autoQuality->maxPolar;
     config.budget.texels = material.autoQuality->budgetTexels();
     if (!cone.sqrtRatio.empty())

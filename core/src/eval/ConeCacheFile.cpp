@@ -111,21 +111,24 @@ std::optional<ConeMap> readCachedCone(const fs::path& dir, const ConeCacheKey& k
     return map;
 }
 
-void writeCachedCone(const fs::path& dir, const ConeCacheKey& key, const ConeMap& map,
-                     std::uint64_t limitBytes) {
+Status writeCachedCone(const fs::path& dir, const ConeCacheKey& key, const ConeMap& map,
+                       std::uint64_t limitBytes) {
+    if (map.width != key.width || map.height != key.height)
+        return Error{"the cone map's size differs from the height map's"};
     std::error_code ec;
     fs::create_directories(dir, ec);
-    if (ec || map.width != key.width || map.height != key.height)
-        return;
+    if (ec)
+        return fileError(dir.string(), ec.message());
     Header h = headerFor(key);
     const std::size_t bytes = map.sqrtRatio.size() * sizeof(float);
     h.payload = fnv1a(map.sqrtRatio.data(), bytes);
     std::string contents(sizeof h + bytes, '\0');
     std::memcpy(contents.data(), &h, sizeof h);
     std::memcpy(contents.data() + sizeof h, map.sqrtRatio.data(), bytes);
-    if (!writeFileAtomically(coneCachePath(dir, key).string(), contents))
-        return; // best effort: the bake is in hand
+    if (Status s = writeFileAtomically(coneCachePath(dir, key).string(), contents); !s)
+        return s; // best effort: the bake is in hand
     trim(dir, limitBytes);
+    return success();
 }
 
 std::uint64_t coneBakerFingerprint() {

@@ -7,6 +7,7 @@
 // hash of the payload; a damaged or foreign file is ignored (and replaced by the next write).
 // Writing is atomic and best effort: a cache that cannot be written costs time, never the answer.
 
+#include "parallax/Result.h"
 #include "parallax/bake/ConeMap.h"
 #include "parallax/heightfield/WrapMode.h"
 
@@ -30,9 +31,10 @@ std::filesystem::path coneCachePath(const std::filesystem::path& dir, const Cone
 std::optional<ConeMap> readCachedCone(const std::filesystem::path& dir, const ConeCacheKey& key);
 
 // Writes `map` for `key` (creating `dir`), then removes this cache's oldest files (by their last
-// use) while its files take more than `limitBytes`. Never touches a file it did not name.
-void writeCachedCone(const std::filesystem::path& dir, const ConeCacheKey& key, const ConeMap& map,
-                     std::uint64_t limitBytes);
+// use) while its files take more than `limitBytes`. Never touches a file it did not name. An
+// error (the folder cannot be made or written) says why nothing was kept; the caller carries on.
+Status writeCachedCone(const std::filesystem::path& dir, const ConeCacheKey& key,
+                       const ConeMap& map, std::uint64_t limitBytes);
 
 // What identifies the bakers' output: a hash of both kinds baked on a small fixed map, and the
 // project's version.

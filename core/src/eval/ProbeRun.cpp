@@ -121,8 +121,12 @@ Status ProbeRun::prepare(const std::vector<Technique>& techniques) {
                            : Status(fileError(m_config.name, baked.error().message));
             slot = std::make_shared<const ConeMap>(std::move(*baked));
             ++m_mapsBaked;
-            if (!m_config.cacheDir.empty())
-                writeCachedCone(m_config.cacheDir, diskKey, *slot, m_config.cacheLimitBytes);
+            if (!m_config.cacheDir.empty()) {
+                if (Status s = writeCachedCone(m_config.cacheDir, diskKey, *slot,
+                                               m_config.cacheLimitBytes);
+                    !s)
+                    m_cacheProblem = s.error().message;
+            }
         }
         std::lock_guard lock(cache().mutex);
         cache().trim();

@@ -48,6 +48,7 @@ public:
     int measuredAngles() const { return m_measured; }
     int mapsBaked() const { return m_mapsBaked; }
     int mapsFromDisk() const { return m_mapsFromDisk; }
+    const std::string& cacheProblem() const { return m_cacheProblem; }
     std::int64_t raysPerAngle() const;
 
 private:
@@ -69,6 +70,7 @@ private:
     int m_cached = 0;
     int m_measured = 0;
     int m_mapsBaked = 0, m_mapsFromDisk = 0; // cone maps, this run
+    std::string m_cacheProblem;              // why a bake could not be kept in cacheDir
 };
 
 void clearProbeCache();

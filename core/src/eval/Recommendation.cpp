@@ -276,6 +276,7 @@ Result<Recommendation> recommend(const RecommendConfig& config, const EvalContro
     r.measuredAngles = run.measuredAngles();
     r.mapsBaked = run.mapsBaked();
     r.mapsFromDisk = run.mapsFromDisk();
+    r.cacheProblem = run.cacheProblem();
     return r;
 }
 

@@ -144,9 +144,10 @@ Result<ExportResult> exportMaterial(const Material& material, const std::string&
 
     // Technique "auto" is resolved here, on the maps being exported; what was chosen is recorded
     // in the notes and the export carries only what the chosen setting reads.
-    Result<ResolvedAuto> resolved = resolveAutoTechnique(
-        material, assets->height, assets->cone, assets->relaxedCone,
-        materialFile.empty() ? material.name : materialFile, engineMarchOf(options.format));
+    Result<ResolvedAuto> resolved =
+        resolveAutoTechnique(material, assets->height, assets->cone, assets->relaxedCone,
+                             materialFile.empty() ? material.name : materialFile,
+                             engineMarchOf(options.format), options.coneCacheDir);
     if (!resolved)
         return resolved.error();
     ExportResult result;

@@ -5,6 +5,7 @@
 #include "parallax/eval/AutoTechnique.h"
 
 #include "parallax/export/Exporter.h"
+#include "parallax/heightfield/HeightFieldLoader.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/sample/ProceduralMaps.h"
@@ -27,6 +28,7 @@ private slots:
     void pixelBudget();
     void resolvesToTheRecommendation();
     void exportCarriesTheChoice();
+    void exportsKeepTheirConeBakes();
 };
 
 namespace {
@@ -202,6 +204,52 @@ void AutoTechniqueTest::exportCarriesTheChoice() {
     const bool relaxed = info(resolved->material.technique).needsRelaxedConeMap;
     QCOMPARE(std::filesystem::exists(root / "package" / "untitled_cone.png"), cone);
     QCOMPARE(std::filesystem::exists(root / "package" / "untitled_relaxed_cone.png"), relaxed);
+}
+
+void AutoTechniqueTest::exportsKeepTheirConeBakes() {
+    // Resolving auto with a cone cache folder: the first export bakes the cone maps and keeps
+    // them there, the next (a new process: the memory cache cleared) reads them and chooses the
+    // same; an export without the folder leaves it alone.
+    QTemporaryDir dir;
+    const std::filesystem::path root = dir.path().toStdString();
+    ImageWriteOptions o;
+    o.format = PixelFormat::UInt16;
+    QVERIFY(writeImage((root / "stones_height.png").string(),
+                       makeProceduralMap(ProceduralMap::Stones, 64, 64, 9).toImage(), o)
+                .ok());
+    { std::ofstream(root / "auto.json") << kAutoMaterial; }
+    Result<Material> m = loadMaterial((root / "auto.json").string());
+    QVERIFY(m.ok());
+    const std::filesystem::path cache = root / "cones";
+    auto cacheFiles = [&] {
+        int n = 0;
+        if (std::filesystem::exists(cache))
+            for (const auto& e : std::filesystem::directory_iterator(cache))
+                n += e.path().extension() == ".pxcone" ? 1 : 0;
+        return n;
+    };
+    ExportOptions options;
+    options.format = ExportFormat::Package;
+    options.outDir = (root / "off").string();
+    QVERIFY(exportMaterial(*m, (root / "auto.json").string(), options).ok());
+    QCOMPARE(cacheFiles(), 0);
+
+    clearRecommendationCache();
+    options.coneCacheDir = cache.string();
+    options.outDir = (root / "first").string();
+    Result<ExportResult> first = exportMaterial(*m, (root / "auto.json").string(), options);
+    QVERIFY2(first.ok(), first.ok() ? "" : first.error().message.c_str());
+    QCOMPARE(cacheFiles(), 2); // the cone and the relaxed cone map
+
+    clearRecommendationCache();
+    Result<HeightField> height = loadHeightField((root / "stones_height.png").string());
+    QVERIFY(height.ok());
+    Result<ResolvedAuto> again =
+        resolveAutoTechnique(*m, *height, {}, {}, "auto.json", std::nullopt, cache.string());
+    QVERIFY(again.ok() && again->recommendation);
+    QCOMPARE(again->recommendation->mapsFromDisk, 2);
+    QCOMPARE(again->recommendation->mapsBaked, 0);
+    QVERIFY2(first->notes.front() == again->note, again->note.c_str());
 }
 
 QTEST_GUILESS_MAIN(AutoTechniqueTest)

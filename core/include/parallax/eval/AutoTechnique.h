@@ -24,7 +24,8 @@ struct ResolvedAuto {
 
 // A material without autoQuality comes back unchanged (and no note). Errors: the height map is
 // missing or empty, or the recommendation's own (naming `source`); a budget nothing meets.
-// `cone` and `relaxedCone` may be empty (baked when a candidate needs them).
+// `cone` and `relaxedCone` may be empty (baked when a candidate needs them, and kept in
+// `coneCacheDir` between runs when it is given: RecommendConfig::cacheDir).
 // `used` plus what resolving "auto" reads: the height map, and the cone maps the material has
 // files for (candidates that read one are measured with it; a missing one is baked). Render and
 // export load this set once, resolve, and use what the choice reads.
@@ -33,6 +34,7 @@ MapSet withAutoInputs(const Material& material, MapSet used);
 Result<ResolvedAuto> resolveAutoTechnique(const Material& material, const HeightField& height,
                                           const ConeMap& cone, const ConeMap& relaxedCone,
                                           const std::string& source,
-                                          std::optional<EngineMarch> engine = std::nullopt);
+                                          std::optional<EngineMarch> engine = std::nullopt,
+                                          const std::string& coneCacheDir = {});
 
 } // namespace px

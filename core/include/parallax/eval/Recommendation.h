@@ -120,8 +120,9 @@ struct Recommendation {
     std::int64_t raysPerAngle = 0;
     int cachedAngles = 0; // angle measures taken from the cache
     int measuredAngles = 0;
-    int mapsBaked = 0;    // cone maps baked by this call
-    int mapsFromDisk = 0; // ... read from RecommendConfig::cacheDir instead
+    int mapsBaked = 0;        // cone maps baked by this call
+    int mapsFromDisk = 0;     // ... read from RecommendConfig::cacheDir instead
+    std::string cacheProblem; // why baked maps could not be kept there (empty: they were)
 };
 
 // The polar angles a recommendation judges, steepest first: the maximum and 5, 10, 20, 40 and

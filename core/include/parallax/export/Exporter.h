@@ -22,6 +22,8 @@ struct ExportOptions {
     PixelFormat normalFormat = PixelFormat::UInt8;
     NormalGreen packageGreen = NormalGreen::OpenGL; // the package's normal map convention
     AssetLoadOptions load;
+    // Where resolving technique "auto" keeps the cone maps it bakes between runs (empty: none).
+    std::string coneCacheDir;
 };
 
 struct ExportResult {
