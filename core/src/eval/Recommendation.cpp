@@ -114,6 +114,10 @@ std::vector<std::vector<BenchSetting>> recommendationLadders(const std::vector<T
     return ladders;
 }
 
+bool costFallsAlongLadder(Technique t) {
+    return t == Technique::Cone || t == Technique::RelaxedCone || t == Technique::Pyramid;
+}
+
 Status validate(const RecommendConfig& c) {
     if (!c.field || c.field->empty())
         return fileError(c.name, "the height map is empty");
@@ -168,10 +172,9 @@ Result<Recommendation> recommend(const RecommendConfig& config, const EvalContro
     // The cost of the cheapest meeting setting so far: a setting found dearer at any angle cannot
     // be chosen, so its measure stops there (GPU time is only known at the end).
     double bestCost = std::numeric_limits<double>::infinity();
-    auto measureRung = [&](const BenchSetting& s) -> Result<std::size_t> {
-        const double limit = config.cost == CostMeasure::GpuTime || !config.giveUpDearer
-                                 ? std::numeric_limits<double>::infinity()
-                                 : bestCost;
+    auto measureRung = [&](const BenchSetting& s, double limit) -> Result<std::size_t> {
+        if (config.cost == CostMeasure::GpuTime || !config.giveUpDearer)
+            limit = std::numeric_limits<double>::infinity();
         Result<ProbeRun::Measured> measured =
             run.measure(techniqueProbe(s, run.maps(), config.scale), timeCpu, limit);
         if (!measured)
@@ -185,30 +188,57 @@ Result<Recommendation> recommend(const RecommendConfig& config, const EvalContro
         return r.measured.size() - 1;
     };
     for (const std::vector<BenchSetting>& ladder : ladders) {
-        // Quality rises along a ladder: find its first meeting rung by bisection, the top first
-        // (if the best rung fails, none will). A rung found dearer than the best so far is taken
-        // as meeting for the bisection: if it does not, the rung that does is dearer still
-        // (cost rises along a ladder), so the ladder has nothing to offer either way.
-        Result<std::size_t> top = measureRung(ladder.back());
+        // Quality rises along a ladder (if its top rung fails, none will), so the rungs that meet
+        // are those from some rung up. Found by bisection, the top first.
+        Result<std::size_t> top = measureRung(ladder.back(), bestCost);
         if (!top)
             return top.error();
-        if (!r.measured[*top].meets && !r.measured[*top].dearer)
-            continue;
         std::optional<std::size_t> best;
-        if (r.measured[*top].meets)
+        if (costFallsAlongLadder(ladder.back().technique)) {
+            // The top rung is the cheapest: the answer is the lowest rung that meets at its cost
+            // (a cap that never binds). Rungs dearer than the top are given up at once.
+            if (!r.measured[*top].meets)
+                continue; // failing, or dearer than the best so far, and the rest are dearer
             best = *top;
-        std::size_t lo = 0, hi = ladder.size() - 1;
-        while (lo < hi) {
-            const std::size_t mid = lo + (hi - lo) / 2;
-            Result<std::size_t> at = measureRung(ladder[mid]);
-            if (!at)
-                return at.error();
-            const MeasuredSetting& m = r.measured[*at];
-            if (m.meets || m.dearer) {
-                hi = mid;
-                best = m.meets ? std::optional(*at) : std::nullopt;
-            } else {
-                lo = mid + 1;
+            // GPU time is taken at the end, for the candidates: along a ladder, fetches stand in.
+            const CostMeasure along =
+                config.cost == CostMeasure::GpuTime ? CostMeasure::Fetches : config.cost;
+            const double topCost = costOf(r.measured[*top], along);
+            std::size_t lo = 0, hi = ladder.size() - 1;
+            while (lo < hi) {
+                const std::size_t mid = lo + (hi - lo) / 2;
+                Result<std::size_t> at = measureRung(ladder[mid], topCost);
+                if (!at)
+                    return at.error();
+                const MeasuredSetting& m = r.measured[*at];
+                if (m.meets && costOf(m, along) <= topCost) {
+                    hi = mid;
+                    best = *at;
+                } else {
+                    lo = mid + 1;
+                }
+            }
+        } else {
+            // Cost rises along the ladder: the first rung that meets is the cheapest. A rung
+            // found dearer than the best so far is taken as meeting for the bisection: if it
+            // does not, the rung that does is dearer still, so the ladder has nothing to offer.
+            if (!r.measured[*top].meets && !r.measured[*top].dearer)
+                continue;
+            if (r.measured[*top].meets)
+                best = *top;
+            std::size_t lo = 0, hi = ladder.size() - 1;
+            while (lo < hi) {
+                const std::size_t mid = lo + (hi - lo) / 2;
+                Result<std::size_t> at = measureRung(ladder[mid], bestCost);
+                if (!at)
+                    return at.error();
+                const MeasuredSetting& m = r.measured[*at];
+                if (m.meets || m.dearer) {
+                    hi = mid;
+                    best = m.meets ? std::optional(*at) : std::nullopt;
+                } else {
+                    lo = mid + 1;
+                }
             }
         }
         if (!best)

@@ -129,10 +129,16 @@ struct Recommendation {
 // 60 degrees below it (those at or above 0).
 std::vector<double> recommendationPolars(double maxPolarDeg);
 
-// Each technique's quality ladders, cheapest first, spaced about 12% apart in cost so that a
+// Each technique's quality ladders, lowest quality first, spaced about 12% apart so that a
 // conservative choice is never more than one small step above the cheapest that would do.
 std::vector<std::vector<BenchSetting>>
 recommendationLadders(const std::vector<Technique>& only = {});
+
+// Which way cost goes along a technique's ladder. The layer marches pay for every layer, so more
+// layers cost more. The capped marches (cone, relaxed-cone, pyramid) walk every remaining cell
+// exactly where their step cap runs out, so a lower cap costs more, not less: on a 2048² map of
+// long flats with spikes, cone at 4 steps took 612 fetches a ray at 80 degrees, at 512 steps 164.
+bool costFallsAlongLadder(Technique t);
 
 // Errors: an empty map, a scale < 0, a polar angle outside [0, 89], no azimuth, a budget < 0,
 // rays outside [4, 256], confidence outside (0.5, 1), gpu cost without a timer.
