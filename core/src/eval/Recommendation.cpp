@@ -100,11 +100,8 @@ std::vector<std::vector<BenchSetting>> recommendationLadders(const std::vector<T
             p.binarySteps = binary;
         });
     ladder(Technique::Cone, 512, [](TraceParams& p, int n) { p.maxSteps = n; });
-    for (int binary : {4, 8})
-        ladder(Technique::RelaxedCone, 256, [&](TraceParams& p, int n) {
-            p.maxSteps = n;
-            p.binarySteps = binary;
-        });
+    // Its last step is solved exactly (no binary steps to choose).
+    ladder(Technique::RelaxedCone, 256, [](TraceParams& p, int n) { p.maxSteps = n; });
     ladder(Technique::Pyramid, 512, [](TraceParams& p, int n) { p.maxSteps = n; });
     if (wanted(Technique::Pyramid)) // uncapped: exact
         ladders.back().push_back(
