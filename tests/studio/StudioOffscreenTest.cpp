@@ -37,6 +37,7 @@
 #include <QSpinBox>
 #include <QTimer>
 #include <QToolButton>
+#include <algorithm>
 #include <future>
 
 using namespace px;
@@ -175,7 +176,11 @@ private slots:
         std::size_t points = 0;
         for (const WorkPrecisionSeries& series : chart->panel().series)
             points += series.points.size();
-        QCOMPARE(points, direct->recommendation->measured.size());
+        // Settings given up mid-trace as dearer than the choice have no figures to plot.
+        const auto measuredThere = std::count_if(
+            direct->recommendation->measured.begin(), direct->recommendation->measured.end(),
+            [](const MeasuredSetting& s) { return !s.angles.empty(); });
+        QCOMPARE(points, static_cast<std::size_t>(measuredThere));
 
         // By hand: the combo's choice replaces auto.
         const Technique other =

@@ -28,23 +28,34 @@ LogRange enclosingDecades(double lo, double hi) {
     return r;
 }
 
-void markFront(WorkPrecisionPanel& panel) {
+// Which error a front compares: as plotted (errors under the floor are equal: a bench's chart),
+// or the errors themselves (a recommendation's chart, to agree with its onFront).
+enum class FrontOn { Plotted, Measured };
+
+void markFront(WorkPrecisionPanel& panel, FrontOn on) {
     std::vector<PointRef> all;
     for (std::size_t s = 0; s < panel.series.size(); ++s) {
         for (std::size_t p = 0; p < panel.series[s].points.size(); ++p)
             all.push_back({s, p});
     }
+    auto error = [on](const WorkPrecisionPoint& p) {
+        return on == FrontOn::Plotted ? p.plotError : p.error;
+    };
     std::stable_sort(all.begin(), all.end(), [&](PointRef a, PointRef b) {
         const WorkPrecisionPoint &pa = panel.at(a), &pb = panel.at(b);
-        return pa.cost != pb.cost ? pa.cost < pb.cost : pa.plotError < pb.plotError;
+        return pa.cost != pb.cost ? pa.cost < pb.cost : error(pa) < error(pb);
     });
     double best = std::numeric_limits<double>::infinity();
+    const WorkPrecisionPoint* last = nullptr;
     for (PointRef ref : all) {
         WorkPrecisionPoint& p = panel.series[ref.series].points[ref.point];
-        if (p.plotError < best) {
-            best = p.plotError;
+        if (error(p) < best) {
+            best = error(p);
             p.onFront = true;
             panel.front.push_back(ref);
+            last = &p;
+        } else if (last && p.cost == last->cost && error(p) == error(*last)) {
+            p.onFront = true; // the same figures twice (a cap that never binds): both on it
         }
     }
 }
@@ -58,7 +69,7 @@ WorkPrecisionSeries& seriesOf(WorkPrecisionPanel& panel, Technique technique) {
 }
 
 // The ranges over the panel's points, and its front.
-void finishPanel(WorkPrecisionPanel& panel, double errorFloor) {
+void finishPanel(WorkPrecisionPanel& panel, double errorFloor, FrontOn on = FrontOn::Plotted) {
     double costLo = std::numeric_limits<double>::infinity(), costHi = 0.0;
     double errorHi = errorFloor;
     for (const WorkPrecisionSeries& s : panel.series) {
@@ -72,7 +83,7 @@ void finishPanel(WorkPrecisionPanel& panel, double errorFloor) {
         panel.costRange = enclosingDecades(costLo, costHi);
     // A decade below the floor, so the points drawn at it stay visible above the axis.
     panel.errorRange = enclosingDecades(errorFloor / 10.0, errorHi);
-    markFront(panel);
+    markFront(panel, on);
 }
 
 } // namespace
@@ -161,7 +172,7 @@ WorkPrecisionPanel makeRecommendationPanel(const Recommendation& r, std::optiona
             *chosen = PointRef{static_cast<std::size_t>(&series - panel.series.data()),
                                series.points.size() - 1};
     }
-    finishPanel(panel, errorFloor);
+    finishPanel(panel, errorFloor, FrontOn::Measured);
     return panel;
 }
 
