@@ -193,7 +193,8 @@ Result<Recommendation> recommend(const RecommendConfig& config, const EvalContro
         std::optional<std::size_t> best;
         if (costFallsAlongLadder(ladder.back().technique)) {
             // The top rung is the cheapest: the answer is the lowest rung that meets at its cost
-            // (a cap that never binds). Rungs dearer than the top are given up at once.
+            // (a cap may bind on some rays and cost nothing more, where the walk pays a fetch a
+            // cell as the steps did). Rungs dearer than the top are given up at once.
             if (!r.measured[*top].meets)
                 continue; // failing, or dearer than the best so far, and the rest are dearer
             best = *top;

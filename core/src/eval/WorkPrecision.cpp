@@ -55,7 +55,7 @@ void markFront(WorkPrecisionPanel& panel, FrontOn on) {
             panel.front.push_back(ref);
             last = &p;
         } else if (last && p.cost == last->cost && error(p) == error(*last)) {
-            p.onFront = true; // the same figures twice (a cap that never binds): both on it
+            p.onFront = true; // the same figures twice (two caps that cost alike): both on it
         }
     }
 }
