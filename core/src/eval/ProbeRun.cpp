@@ -198,11 +198,12 @@ Result<const std::vector<TraceResult>*> ProbeRun::reference(std::size_t polarInd
     return slot.get();
 }
 
-Result<ProbeRun::Measured> ProbeRun::measure(const Probe& probe, bool timeCpu, double costLimit) {
+Result<ProbeRun::Measured> ProbeRun::measure(const Probe& probe, bool timeCpu, double costLimit,
+                                             std::size_t maxAngles) {
     Measured out;
     std::optional<RangeTrace> trace;
     const HeightField& field = *m_config.field;
-    for (std::size_t p = 0; p < m_polars.size(); ++p) {
+    for (std::size_t p = 0; p < std::min(m_polars.size(), maxAngles); ++p) {
         if (m_control.cancelled())
             return evaluationCancelled();
         const std::string key =

@@ -41,8 +41,10 @@ public:
         std::vector<AngleMeasure> angles;
         bool dearer = false;
     };
+    // maxAngles: the steepest ones only (the rest are measured by a later call, from the cache).
     Result<Measured> measure(const Probe& probe, bool timeCpu,
-                             double costLimit = std::numeric_limits<double>::infinity());
+                             double costLimit = std::numeric_limits<double>::infinity(),
+                             std::size_t maxAngles = std::numeric_limits<std::size_t>::max());
 
     int cachedAngles() const { return m_cached; }
     int measuredAngles() const { return m_measured; }
