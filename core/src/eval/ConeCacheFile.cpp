@@ -133,14 +133,20 @@ Status writeCachedCone(const fs::path& dir, const ConeCacheKey& key, const ConeM
 
 std::uint64_t coneBakerFingerprint() {
     static const std::uint64_t fingerprint = [] {
-        // A small map with what the bakers treat specially: a wall, a pit, a spike, slopes.
-        HeightField field(24, 20);
+        // A small map with what the bakers treat specially: a wall, a pit, a spike, slopes, a
+        // long flat ending in a spike, a patch of hashed noise. Many tiles and pyramid levels wide,
+        // so that a change that only shows past one tile or level still changes the fingerprint
+        // (about 20 ms, once a process).
+        HeightField field(48, 40);
         for (int y = 0; y < field.height; ++y)
             for (int x = 0; x < field.width; ++x) {
+                const unsigned mix = unsigned(x) * 73856093U ^ unsigned(y) * 19349663U;
                 float h = 0.3f + 0.02f * float((x * 7 + y * 13) % 11);
-                h = x >= 16 ? 0.9f : h;
+                h = (x >= 40 && y < 8) ? 0.1f + 0.8f * float(mix % 1000U) / 1000.0f : h;
+                h = x == 24 ? 0.9f : h;
                 h = (x == 5 && y == 6) ? 1.0f : h;
                 h = (x >= 9 && x <= 11 && y >= 12 && y <= 14) ? 0.0f : h;
+                h = (y >= 30 && x < 40) ? (x == 39 ? 1.0f : 0.2f) : h;
                 field.at(x, y) = h;
             }
         std::uint64_t h = fnv1a(kVersion, std::strlen(kVersion));
