@@ -1,9 +1,10 @@
 # Runs one command and checks its exit status and its output (stdout and stderr together):
 #   cmake -DCOMMAND="a;b;c" -DEXPECT_RC=N [-DEXPECT="regex1;regex2"] [-DREJECT=regex]
-#         [-DCREATES="file1;file2"] [-DUNCHANGED="file=twin;..."]
+#         [-DCREATES="file1;file2"] [-DUNCHANGED="file=twin;..."] [-DONLY="folder=a,b;..."]
 #         [-DOUT_FILE=file -DOUT_EXPECT=regex] -P PxRunCli.cmake
 # CREATES: files that must exist and be non-empty afterwards. UNCHANGED: each file must still be
-# byte-identical to its twin (what a failed command must leave alone). OUT_FILE: a file the command
+# byte-identical to its twin (what a failed command must leave alone). ONLY: each folder must hold
+# exactly the entries named, hidden ones counted (nothing left behind). OUT_FILE: a file the command
 # wrote, whose content must match OUT_EXPECT.
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 set(all "${out}${err}")
@@ -35,6 +36,20 @@ foreach(pair IN LISTS UNCHANGED)
   execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${file}" "${twin}" RESULT_VARIABLE same)
   if(NOT same EQUAL 0)
     message(FATAL_ERROR "${file} changed (it no longer equals ${twin})")
+  endif()
+endforeach()
+foreach(pair IN LISTS ONLY)
+  string(FIND "${pair}" "=" eq)
+  string(SUBSTRING "${pair}" 0 ${eq} folder)
+  math(EXPR eq "${eq} + 1")
+  string(SUBSTRING "${pair}" ${eq} -1 want)
+  string(REPLACE "," ";" want "${want}")
+  file(GLOB found LIST_DIRECTORIES true RELATIVE "${CMAKE_CURRENT_BINARY_DIR}/${folder}"
+       "${folder}/*" "${folder}/.*")
+  list(SORT found)
+  list(SORT want)
+  if(NOT "${found}" STREQUAL "${want}")
+    message(FATAL_ERROR "${folder} holds '${found}', expected exactly '${want}'")
   endif()
 endforeach()
 if(OUT_FILE)

@@ -47,7 +47,7 @@ set(PX_RUN_CLI ${CMAKE_CURRENT_LIST_DIR}/PxRunCli.cmake)
 
 function(px_add_cli_test)
   cmake_parse_arguments(T "FAIL" "NAME;RC;TIMEOUT;OUT_FILE;OUT_EXPECT"
-                        "COMMAND;EXPECT;REJECT;CREATES;UNCHANGED;LABELS;ENV" ${ARGN})
+                        "COMMAND;EXPECT;REJECT;CREATES;UNCHANGED;ONLY;LABELS;ENV" ${ARGN})
   if(T_FAIL)
     message(FATAL_ERROR "cli.${T_NAME}: FAIL checks no status or message: give RC and EXPECT")
   endif()
@@ -70,7 +70,7 @@ function(px_add_cli_test)
   add_test(NAME cli.${T_NAME}
            COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:parallax-cli>;${T_COMMAND}"
                    -DEXPECT_RC=${T_RC} "-DEXPECT=${T_EXPECT}" "-DREJECT=${T_REJECT}"
-                   "-DCREATES=${T_CREATES}" "-DUNCHANGED=${T_UNCHANGED}"
+                   "-DCREATES=${T_CREATES}" "-DUNCHANGED=${T_UNCHANGED}" "-DONLY=${T_ONLY}"
                    "-DOUT_FILE=${T_OUT_FILE}" "-DOUT_EXPECT=${T_OUT_EXPECT}" -P ${PX_RUN_CLI}
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   set(_labels cli ${T_LABELS})

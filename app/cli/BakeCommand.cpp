@@ -7,6 +7,7 @@
 
 #include "Cli.h"
 #include "CommonOptions.h"
+#include "ProgressLine.h"
 #include "parallax/bake/BakeEncoding.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/MaxMipPyramid.h"
@@ -15,14 +16,10 @@
 #include "parallax/material/MaterialNames.h"
 
 #include <algorithm>
-#include <chrono>
-#include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <unistd.h>
 
 namespace px::cli {
 
@@ -40,50 +37,6 @@ struct BakeOptions {
     std::string layout = "atlas";
     int level = -1;
     std::string out;
-};
-
-// "baking relaxed-cone map: 42%" on stderr, once the bake has run for a second: one updating
-// line on a terminal, a line per 10% otherwise. PX_BAKE_TEST_INTERRUPT_AT=F (tests only) raises
-// SIGINT once the bake is F done, to exercise the real Ctrl-C path (Interrupt.h).
-class ProgressLine {
-public:
-    explicit ProgressLine(std::string what)
-        : m_what(std::move(what)), m_start(std::chrono::steady_clock::now()),
-          m_tty(isatty(STDERR_FILENO)) {
-        if (const char* at = std::getenv("PX_BAKE_TEST_INTERRUPT_AT"))
-            m_interruptAt = std::strtof(at, nullptr);
-    }
-    ~ProgressLine() {
-        if (m_shown && m_tty)
-            std::fputc('\n', stderr);
-    }
-
-    void operator()(float done) {
-        if (m_interruptAt >= 0.0f && done >= m_interruptAt) {
-            m_interruptAt = -1.0f;
-            std::raise(SIGINT);
-        }
-        const auto elapsed = std::chrono::steady_clock::now() - m_start;
-        if (elapsed < std::chrono::seconds(1))
-            return;
-        const int percent = static_cast<int>(done * 100.0f);
-        if (m_tty) {
-            if (percent != m_last)
-                std::fprintf(stderr, "\r%s: %3d%%", m_what.c_str(), percent);
-        } else if (percent / 10 != m_last / 10 || !m_shown) {
-            std::fprintf(stderr, "%s: %d%%\n", m_what.c_str(), percent);
-        }
-        m_last = percent;
-        m_shown = true;
-    }
-
-private:
-    std::string m_what;
-    std::chrono::steady_clock::time_point m_start;
-    bool m_tty;
-    bool m_shown = false;
-    int m_last = -1;
-    float m_interruptAt = -1.0f;
 };
 
 std::string lowerExtension(const std::string& path) {

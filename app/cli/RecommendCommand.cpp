@@ -4,6 +4,7 @@
 
 #include "Cli.h"
 #include "CommonOptions.h"
+#include "ProgressLine.h"
 #include "parallax/eval/EngineMarch.h"
 #include "parallax/eval/QualitySweep.h"
 #include "parallax/eval/Recommendation.h"
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -245,7 +247,23 @@ int runRecommend(const RecommendOptions& o) {
         config.techniques = std::move(*list);
     }
 
-    Result<Recommendation> r = recommend(config);
+    // A first run on a map bakes its cone maps (seconds to a minute at 2048²): say so.
+    std::unique_ptr<ProgressLine> line;
+    std::string lineStage;
+    EvalControl control;
+    control.progress = [&](const EvalProgress& p) {
+        if (!line || p.stage != lineStage) {
+            line.reset();
+            lineStage = p.stage;
+            line = std::make_unique<ProgressLine>(
+                p.stage + " of " + config.name +
+                (config.cacheDir.empty() ? ""
+                                         : " (first run on it; cache: " + config.cacheDir + ")"));
+        }
+        (*line)(static_cast<float>(p.done) / static_cast<float>(p.total));
+    };
+    Result<Recommendation> r = recommend(config, control);
+    line.reset();
     if (!r)
         return fail(r.error().message);
     std::vector<EngineLayersAdvice> engines;

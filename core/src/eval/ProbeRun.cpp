@@ -90,9 +90,15 @@ Status ProbeRun::prepare(const std::vector<Technique>& techniques) {
     };
     const HeightField& field = *m_config.field;
     const std::string& key = m_contentKey;
-    const BakeControl bakeControl{{}, m_control.cancel};
     for (ConeKind kind : {ConeKind::Conservative, ConeKind::Relaxed}) {
         const bool conservative = kind == ConeKind::Conservative;
+        BakeControl bakeControl{{}, m_control.cancel};
+        if (m_control.progress) {
+            const std::string stage = conservative ? "baking cone map" : "baking relaxed-cone map";
+            bakeControl.progress = [this, stage](float done) {
+                m_control.progress({static_cast<int>(done * 1000.0f), 1000, stage});
+            };
+        }
         std::shared_ptr<const ConeMap>& slot = conservative ? m_cone : m_relaxedCone;
         if (slot || !needs(conservative ? &TechniqueInfo::needsConeMap
                                         : &TechniqueInfo::needsRelaxedConeMap))

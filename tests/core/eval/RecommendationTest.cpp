@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <random>
 
 using namespace px;
@@ -33,6 +34,7 @@ private slots:
     void cappedMarchesTakeACapThatDoesNotBind();
     void givingUpDearerSettingsChangesNothing_data();
     void givingUpDearerSettingsChangesNothing();
+    void coldRunReportsItsBakes();
     void invalidInput();
 };
 
@@ -429,6 +431,42 @@ void RecommendationTest::givingUpDearerSettingsChangesNothing() {
         }
     }
     QVERIFY(checked > 0);
+}
+
+// A first run on a map waits for its cone bakes, so they report progress (and only they: the
+// search's length is not known ahead); a second run has the maps and reports nothing.
+void RecommendationTest::coldRunReportsItsBakes() {
+    const RecommendConfig config = testConfig(testMap("bricks", 5));
+    std::mutex mutex;
+    std::vector<EvalProgress> seen;
+    EvalControl control;
+    control.progress = [&](const EvalProgress& p) {
+        std::lock_guard lock(mutex);
+        seen.push_back(p);
+    };
+    Result<Recommendation> cold = recommend(config, control);
+    QVERIFY(cold.ok() && cold->found);
+    std::vector<std::string> stages;
+    for (std::size_t k = 0; k < seen.size(); ++k) {
+        const EvalProgress& p = seen[k];
+        QCOMPARE(p.total, 1000);
+        QVERIFY(p.done >= 0 && p.done <= p.total);
+        if (stages.empty() || stages.back() != p.stage) {
+            stages.push_back(p.stage);
+            QVERIFY2(k == 0 || seen[k - 1].done == 1000, "a bake ends at 1000 before the next");
+        } else {
+            QVERIFY(p.done >= seen[k - 1].done);
+        }
+    }
+    QVERIFY(!seen.empty());
+    QCOMPARE(seen.back().done, 1000);
+    QCOMPARE(stages, (std::vector<std::string>{"baking cone map", "baking relaxed-cone map"}));
+
+    seen.clear();
+    Result<Recommendation> again = recommend(config, control);
+    QVERIFY(again.ok());
+    QCOMPARE(keyOf(again->chosen.setting), keyOf(cold->chosen.setting));
+    QVERIFY(seen.empty());
 }
 
 void RecommendationTest::invalidInput() {

@@ -24,7 +24,8 @@ struct EvalProgress {
 
 struct EvalControl {
     // Called after each unit of work on the thread that runs the evaluation (never concurrently,
-    // never from its worker threads); keep it short: post, don't paint.
+    // never from its worker threads; recommend()'s bakes excepted, see there); keep it short:
+    // post, don't paint.
     std::function<void(const EvalProgress&)> progress;
     // Polled between rows of rays; once it reads true the evaluation returns
     // evaluationCancelled() within about one row of one trace (or one bake). Null: never.

@@ -145,6 +145,9 @@ bool costFallsAlongLadder(Technique t);
 Status validate(const RecommendConfig& config);
 
 // Fails with validate()'s errors, a bake or tracer error naming the map, or evaluationCancelled().
+// Progress: only the cone bakes report (how long the search runs is not known ahead, and the
+// bakes are what a first run on a map waits for): stage "baking cone map" or "baking relaxed-cone
+// map", done of 1000 for that bake, called from the baker's threads, never concurrently.
 Result<Recommendation> recommend(const RecommendConfig& config, const EvalControl& control = {});
 
 // Empties the measurement cache (tests, and the editor when memory is short).
