@@ -241,7 +241,7 @@ void BenchTest::gpuTimerFillsTheColumn() {
         // The bench hands over the maps it baked: a relaxed-cone request carries its cone map.
         if (r.setting->technique == Technique::RelaxedCone && !r.maps.relaxedCone)
             return Error{"bad request"};
-        return GpuFrameTiming{2.5, "Fake GPU"};
+        return GpuFrameTiming{2.5, "Fake GPU", {}, {}};
     };
     Result<BenchReport> report = runBench(config);
     QVERIFY(report.ok());
