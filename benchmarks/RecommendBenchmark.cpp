@@ -32,15 +32,19 @@ struct Prepared {
     std::shared_ptr<const ConeMap> cone, relaxed;
 };
 
-constexpr ProceduralMap kMaps[] = {ProceduralMap::Noise, ProceduralMap::Bricks,
-                                   ProceduralMap::SpikeFlat};
-constexpr const char* kMapNames[] = {"noise 2048", "bricks 2048", "spike-flat 2048"};
+struct BenchMap {
+    ProceduralMap map;
+    const char* name;
+};
+constexpr BenchMap kMaps[] = {{ProceduralMap::Noise, "noise 2048"},
+                              {ProceduralMap::Bricks, "bricks 2048"},
+                              {ProceduralMap::SpikeFlat, "spike-flat 2048"}};
 
 const Prepared& prepared(int kind) {
     static Prepared maps[std::size(kMaps)];
     Prepared& p = maps[kind];
     if (!p.field) {
-        p.field = std::make_shared<HeightField>(makeProceduralMap(kMaps[kind], 2048, 2048, 1));
+        p.field = std::make_shared<HeightField>(makeProceduralMap(kMaps[kind].map, 2048, 2048, 1));
         p.cone = std::make_shared<ConeMap>(
             bakeConeMap(*p.field, WrapMode::Repeat, ConeKind::Conservative));
         p.relaxed =
@@ -56,7 +60,7 @@ void run(benchmark::State& state, Mode mode) {
     const Prepared& p = prepared(kind);
     RecommendConfig config;
     config.field = p.field;
-    config.name = kMapNames[kind];
+    config.name = kMaps[kind].name;
     config.giveUpDearer = mode != Mode::WarmInFull;
     if (mode != Mode::Cold) {
         config.cone = p.cone;

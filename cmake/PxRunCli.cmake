@@ -3,9 +3,10 @@
 #         [-DCREATES="file1;file2"] [-DUNCHANGED="file=twin;..."] [-DONLY="folder=a,b;..."]
 #         [-DOUT_FILE=file -DOUT_EXPECT=regex] -P PxRunCli.cmake
 # CREATES: files that must exist and be non-empty afterwards. UNCHANGED: each file must still be
-# byte-identical to its twin (what a failed command must leave alone). ONLY: each folder must hold
-# exactly the entries named, hidden ones counted (nothing left behind). OUT_FILE: a file the command
-# wrote, whose content must match OUT_EXPECT.
+# byte-identical to its twin (what a failed command must leave alone). ONLY: each folder (relative
+# to the working folder) must hold exactly the entries named, hidden ones counted (nothing left
+# behind; a missing folder holds none). OUT_FILE: a file the command wrote, whose content must
+# match OUT_EXPECT.
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 set(all "${out}${err}")
 message("${all}")

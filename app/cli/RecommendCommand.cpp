@@ -257,8 +257,7 @@ int runRecommend(const RecommendOptions& o) {
             lineStage = p.stage;
             line = std::make_unique<ProgressLine>(
                 p.stage + " of " + config.name +
-                (config.cacheDir.empty() ? ""
-                                         : " (first run on it; cache: " + config.cacheDir + ")"));
+                (config.cacheDir.empty() ? "" : " (not in the cache " + config.cacheDir + " yet)"));
         }
         (*line)(static_cast<float>(p.done) / static_cast<float>(p.total));
     };

@@ -92,13 +92,6 @@ Status ProbeRun::prepare(const std::vector<Technique>& techniques) {
     const std::string& key = m_contentKey;
     for (ConeKind kind : {ConeKind::Conservative, ConeKind::Relaxed}) {
         const bool conservative = kind == ConeKind::Conservative;
-        BakeControl bakeControl{{}, m_control.cancel};
-        if (m_control.progress) {
-            const std::string stage = conservative ? "baking cone map" : "baking relaxed-cone map";
-            bakeControl.progress = [this, stage](float done) {
-                m_control.progress({static_cast<int>(done * 1000.0f), 1000, stage});
-            };
-        }
         std::shared_ptr<const ConeMap>& slot = conservative ? m_cone : m_relaxedCone;
         if (slot || !needs(conservative ? &TechniqueInfo::needsConeMap
                                         : &TechniqueInfo::needsRelaxedConeMap))
@@ -120,6 +113,14 @@ Status ProbeRun::prepare(const std::vector<Technique>& techniques) {
             slot = std::make_shared<const ConeMap>(std::move(*kept));
             ++m_mapsFromDisk;
         } else {
+            // The bake is what a first run on a map waits for: its progress is recommend()'s.
+            BakeControl bakeControl{{}, m_control.cancel};
+            if (m_control.progress) {
+                const char* stage = conservative ? "baking cone map" : "baking relaxed-cone map";
+                bakeControl.progress = [this, stage](float done) {
+                    m_control.progress({static_cast<int>(done * 1000.0f), 1000, stage});
+                };
+            }
             Result<ConeMap> baked = bakeConeMap(field, m_config.wrap, kind, bakeControl);
             if (!baked)
                 return isCancelled(baked.error())

@@ -48,10 +48,15 @@ Probe techniqueProbe(const BenchSetting& s, const TraceMaps& maps, float scale) 
     return probe;
 }
 
+// One angle's cost in CPU time or fetches (GPU time is the whole frame's: costOf()).
+double angleCost(const AngleMeasure& a, CostMeasure cost) {
+    return cost == CostMeasure::CpuTime ? a.cpuNsPerRay.value_or(0.0) : a.meanFetches;
+}
+
 double costOf(const MeasuredSetting& m, CostMeasure cost) {
     double c = 0.0;
     for (const AngleMeasure& a : m.angles)
-        c = std::max(c, cost == CostMeasure::CpuTime ? a.cpuNsPerRay.value_or(0.0) : a.meanFetches);
+        c = std::max(c, angleCost(a, cost));
     if (cost == CostMeasure::GpuTime)
         return m.gpuMsPerFrame.value_or(std::numeric_limits<double>::infinity());
     return c;
@@ -122,7 +127,8 @@ namespace {
 // cheapest top first, judged at the steepest angle alone, where rays cost most: the first then
 // sets a low cost that the others' tops are given up against, often at that one angle. Tops
 // that fail there, or cost more than `limit`, go last. The order changes no answer: candidates
-// are compared in ladder order at the end. On spike-flat 2048² it halved the warm run.
+// are compared in ladder order at the end. On spike-flat 2048² it halved the warm run. Only
+// worth it where dearer settings are given up (CPU time or fetches).
 Status orderCappedLadders(ProbeRun& run, const RecommendConfig& config,
                           const std::vector<std::vector<BenchSetting>>& ladders, double limit,
                           std::size_t from, std::vector<std::size_t>& order) {
@@ -137,11 +143,9 @@ Status orderCappedLadders(ProbeRun& run, const RecommendConfig& config,
             run.measure(techniqueProbe(ladder.back(), run.maps(), config.scale), timeCpu, limit, 1);
         if (!m)
             return m.error();
-        double cost = std::numeric_limits<double>::infinity();
-        if (!m->dearer && !m->angles.empty() && m->angles.front().meets) {
-            const AngleMeasure& a = m->angles.front();
-            cost = timeCpu ? a.cpuNsPerRay.value_or(0.0) : a.meanFetches;
-        }
+        const bool meets = !m->dearer && !m->angles.empty() && m->angles.front().meets;
+        const double cost = meets ? angleCost(m->angles.front(), config.cost)
+                                  : std::numeric_limits<double>::infinity();
         slots.push_back(k);
         steepest.emplace_back(cost, order[k]);
     }
@@ -209,8 +213,9 @@ Result<Recommendation> recommend(const RecommendConfig& config, const EvalContro
     // The cost of the cheapest meeting setting so far: a setting found dearer at any angle cannot
     // be chosen, so its measure stops there (GPU time is only known at the end).
     double bestCost = std::numeric_limits<double>::infinity();
+    const bool giveUp = config.cost != CostMeasure::GpuTime && config.giveUpDearer;
     auto measureRung = [&](const BenchSetting& s, double limit) -> Result<std::size_t> {
-        if (config.cost == CostMeasure::GpuTime || !config.giveUpDearer)
+        if (!giveUp)
             limit = std::numeric_limits<double>::infinity();
         Result<ProbeRun::Measured> measured =
             run.measure(techniqueProbe(s, run.maps(), config.scale), timeCpu, limit);
@@ -224,17 +229,17 @@ Result<Recommendation> recommend(const RecommendConfig& config, const EvalContro
         r.measured.push_back(std::move(m));
         return r.measured.size() - 1;
     };
-    // The ladders in the order they are searched: see orderCappedLadders().
+    // The ladders in the order they are searched: as given, up to the first capped one, from
+    // where orderCappedLadders() reorders them once the ladders before it have set bestCost.
     std::vector<std::size_t> order(ladders.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
-    bool capsOrdered = false;
+    const auto firstCapped = static_cast<std::size_t>(
+        std::find_if(ladders.begin(), ladders.end(),
+                     [](const auto& l) { return costFallsAlongLadder(l.front().technique); }) -
+        ladders.begin());
     for (std::size_t at = 0; at < order.size(); ++at) {
-        if (!capsOrdered && costFallsAlongLadder(ladders[order[at]].front().technique)) {
-            capsOrdered = true;
-            const double limit = config.cost == CostMeasure::GpuTime || !config.giveUpDearer
-                                     ? std::numeric_limits<double>::infinity()
-                                     : bestCost;
-            if (Status s = orderCappedLadders(run, config, ladders, limit, at, order); !s)
+        if (giveUp && at == firstCapped) {
+            if (Status s = orderCappedLadders(run, config, ladders, bestCost, at, order); !s)
                 return s.error();
         }
         const std::size_t ladderIndex = order[at];
