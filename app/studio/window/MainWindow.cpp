@@ -10,6 +10,7 @@
 #include "panels/ViewPanel.h"
 #include "preview/GlSupport.h"
 #include "preview/ViewportGrid.h"
+#include "widgets/WheelGuard.h"
 #include "window/MainWindowActions.h"
 #include "window/RecentFiles.h"
 
@@ -61,6 +62,7 @@ MainWindow::MainWindow(const QString& liveReason, QWidget* parent)
     setObjectName(QStringLiteral("MainWindow"));
     setAcceptDrops(true);
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+    new WheelGuard(this); // before the panels: the wheel scrolls them, not their fields
     createPanels(liveReason);
     createActions();
     createMenus();
