@@ -5,9 +5,9 @@
 #include "panels/ViewPanel.h"
 #include "parallax/light/Environment.h"
 #include "preview/ViewportGrid.h"
+#include "widgets/FileDialogs.h"
 #include "window/MainWindow.h"
 
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QStatusBar>
 #include <memory>
@@ -56,7 +56,7 @@ bool MainWindow::setEnvironment(const QString& source) {
 
 void MainWindow::loadEnvironmentDialog() {
     const QString path =
-        QFileDialog::getOpenFileName(this, tr("Load Environment"), QString(), kEnvironmentFilter);
+        askOpenFile(this, FileKind::Environment, tr("Load Environment"), kEnvironmentFilter);
     if (!path.isEmpty())
         setEnvironment(path);
 }

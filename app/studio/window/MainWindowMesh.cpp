@@ -7,10 +7,10 @@
 #include "panels/ViewPanel.h"
 #include "parallax/mesh/MeshLoader.h"
 #include "preview/ViewportGrid.h"
+#include "widgets/FileDialogs.h"
 #include "window/MainWindow.h"
 #include "window/RecentFiles.h"
 
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QSettings>
 #include <QStatusBar>
@@ -113,8 +113,7 @@ bool MainWindow::loadMeshWith(const QString& path, int uvSet, bool remembered) {
 }
 
 void MainWindow::loadMeshDialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Load Mesh"), QString(), kMeshFilter);
+    const QString path = askOpenFile(this, FileKind::Mesh, tr("Load Mesh"), kMeshFilter);
     if (!path.isEmpty())
         loadMesh(path);
 }
