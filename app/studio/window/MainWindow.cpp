@@ -96,6 +96,7 @@ MainWindow::MainWindow(const QString& liveReason, QWidget* parent)
     connect(m_viewPanel, &ViewPanel::loadEnvironmentRequested, this,
             &MainWindow::loadEnvironmentDialog);
     connect(m_viewports, &ViewportGrid::viewEdited, this, &MainWindow::rememberMaterialMesh);
+    connect(m_viewports, &ViewportGrid::viewEdited, this, &MainWindow::rememberMaterialLight);
     new SkyFollower(m_viewports, this); // the sky's sun moves with the light
     updateRecentMenu();
     updateTitle();

@@ -21,6 +21,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QScopedValueRollback>
 #include <QStatusBar>
 
 namespace px::studio {
@@ -81,7 +82,12 @@ bool MainWindow::openFile(const QString& path) {
     m_recent->add(path);
     showNotes(loaded->notes);
     bakeMissingConeMaps();
-    restoreMaterialMesh();
+    {
+        // Read back as a whole: loading the mesh must not record the light it finds.
+        const QScopedValueRollback restoring(m_restoringPreview, true);
+        restoreMaterialMesh();
+        restoreMaterialLight();
+    }
     return true;
 }
 
@@ -112,6 +118,7 @@ bool MainWindow::saveTo(const QString& path) {
     m_document->markSaved(*saved, QFileInfo(path).absoluteFilePath());
     m_recent->add(path);
     rememberMaterialMesh();
+    rememberMaterialLight();
     statusBar()->showMessage(tr("Saved %1.").arg(QFileInfo(path).fileName()), 5000);
     return true;
 }

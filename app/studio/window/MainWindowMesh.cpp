@@ -9,12 +9,12 @@
 #include "preview/ViewportGrid.h"
 #include "widgets/FileDialogs.h"
 #include "window/MainWindow.h"
+#include "window/MaterialSettings.h"
 #include "window/RecentFiles.h"
 
 #include <QFileInfo>
 #include <QSettings>
 #include <QStatusBar>
-#include <QUrl>
 #include <atomic>
 #include <memory>
 
@@ -24,23 +24,17 @@ namespace {
 
 const QString kMeshFilter = QObject::tr("Meshes (*.obj *.gltf *.glb);;All files (*)");
 
-// One settings key per file; its path, percent-encoded, cannot open a settings group.
-QString fileKey(const char* group, const QString& path) {
-    return QString::fromLatin1(group) + QLatin1Char('/') +
-           QString::fromLatin1(QUrl::toPercentEncoding(QFileInfo(path).absoluteFilePath()));
-}
-
 QString meshKey(const QString& materialPath) {
-    return fileKey("previewMesh", materialPath);
+    return settingsKeyForFile("previewMesh", materialPath);
 }
 
 QString materialUvSetKey(const QString& materialPath) {
-    return fileKey("previewMeshUvSet", materialPath);
+    return settingsKeyForFile("previewMeshUvSet", materialPath);
 }
 
 // The uv set a mesh file was last shown with, whatever the material (the recent meshes).
 QString meshUvSetKey(const QString& meshPath) {
-    return fileKey("meshUvSet", meshPath);
+    return settingsKeyForFile("meshUvSet", meshPath);
 }
 
 } // namespace
@@ -121,7 +115,7 @@ void MainWindow::loadMeshDialog() {
 // Called whenever a view changes: writes only when the material's mesh or uv set did.
 void MainWindow::rememberMaterialMesh() {
     const QString material = m_document->filePath();
-    if (material.isEmpty())
+    if (material.isEmpty() || m_restoringPreview)
         return;
     const SharedView& view = m_viewports->activeView();
     const QString mesh = view.meshData ? view.meshFile : QString();
