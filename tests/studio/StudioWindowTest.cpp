@@ -3,7 +3,6 @@
 // baking a cone map enables the cone technique, undo restores, and a corrupt file changes nothing.
 
 #include "StudioTestSupport.h"
-#include "jobs/BackgroundPriority.h"
 #include "jobs/BakeRunner.h"
 #include "jobs/MapUpload.h"
 #include "panels/ComparePanel.h"
@@ -426,21 +425,6 @@ private slots:
                 .scaled(side, side, Qt::KeepAspectRatio, Qt::SmoothTransformation);
         QCOMPARE(shown.convertToFormat(QImage::Format_RGB32),
                  expected.convertToFormat(QImage::Format_RGB32));
-    }
-
-    // Bakes run below the GUI thread: TBB's workers (and the bake's job thread) at a higher nice
-    // value, the GUI thread as it was (on 2 cores a bake otherwise starved the event loop).
-    void bakesRunBelowTheGuiThread() {
-        auto w = makeWindow();
-        QVERIFY(w);
-        const int gui = thisThreadsNice();
-        // TBB's workers, once a baker's observer is in place (the window's BakeRunner).
-        QCOMPARE(tbbWorkerNice(), kBackgroundNice);
-        // A bake in the editor leaves the GUI thread's priority as it was.
-        w->startBake(BakeKind::Cone);
-        QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 60000);
-        QVERIFY(w->document()->state().hasMap(MapKind::Cone));
-        QCOMPARE(thisThreadsNice(), gui);
     }
 
     // The built-in sample is 16-bit, as most artists' maps are: loading one keeps the height

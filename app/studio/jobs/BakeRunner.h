@@ -11,11 +11,14 @@
 #include <QFutureWatcher>
 #include <QObject>
 #include <QString>
+#include <QThreadPool>
 #include <atomic>
 #include <deque>
 #include <memory>
 
 namespace px::studio {
+
+class BackgroundArena;
 
 enum class BakeKind { Normal, Cone, RelaxedCone };
 QString bakeTitle(BakeKind kind); // "normal map", "cone map", "relaxed cone map"
@@ -34,6 +37,7 @@ struct BakeOutcome {
     QString error; // empty on success
     bool cancelled = false;
     double seconds = 0.0;
+    int threadNice = 0; // the bake's thread's nice value while it baked (BackgroundPriority.h)
 };
 
 class BakeRunner : public QObject {
@@ -64,6 +68,10 @@ private:
     std::optional<BakeRequest> m_runningRequest;
     bool m_running = false;
     std::shared_ptr<std::atomic<bool>> m_cancel;
+    // A thread and a TBB arena of the bakes' own, both below the GUI: the threads that run loads
+    // and exports (Qt's global pool, TBB's default arena) keep their priority.
+    QThreadPool m_pool;
+    std::unique_ptr<BackgroundArena> m_arena;
     QFutureWatcher<BakeOutcome> m_watcher;
 };
 
