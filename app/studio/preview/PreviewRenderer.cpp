@@ -5,6 +5,7 @@
 #include "parallax/render/GpuEnvironment.h" // parallax-render
 #include "parallax/render/Renderer.h"       // parallax-render
 #include "preview/ErrorStats.h"
+#include "preview/VisibleRegion.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
@@ -83,16 +84,20 @@ std::vector<std::weak_ptr<MapUpload>>& runningUploads() {
 // the GUI thread with llvmpipe.
 std::size_t g_backgroundTexels = std::size_t(4096) * 4096;
 
-// A measurement under way: the view's pass, then exact's, drawn a few boxes at a time into the
-// surface target (u, v, t, fetches; -1 outside the boxes).
+// A measurement under way, drawn a few boxes at a time into the surface target (u, v, t,
+// fetches; -1 outside the boxes): each pixel's own uv over the whole view (no tracing: what the
+// view shows, VisibleRegion.h), then the view's hits and exact's in the boxes.
 struct Measurement {
+    enum class Pass { Entry, View, Exact };
     PreviewScene scene;
     double frameMs = 0.0;
-    std::vector<QRect> boxes;
-    std::size_t next = 0;   // the next box to draw
-    bool reference = false; // the second pass: exact
-    Image hits;             // the first pass's output
-    double boxMs = 0.0;     // the dearest box drawn so far (a pass's last box reads it back)
+    std::vector<QRect> boxes; // the view's and exact's passes
+    std::vector<QRect> whole; // the entry pass
+    std::size_t next = 0;     // the next box of the pass to draw
+    Pass pass = Pass::Entry;
+    Image entry, hits;  // the first two passes' output
+    double boxMs = 0.0; // the dearest box drawn so far (a pass's last box reads it back)
+    const std::vector<QRect>& passBoxes() const { return pass == Pass::Entry ? whole : boxes; }
 };
 
 } // namespace
@@ -236,7 +241,10 @@ struct PreviewRenderer::Impl {
         o.output = ShaderOutput::Surface;
         o.clear = true; // inside the box
         Material material = m.scene.material;
-        if (m.reference) {
+        if (m.pass == Measurement::Pass::Entry) {
+            material.technique = Technique::None; // the surface's own uv, t = 0
+            material.params = info(Technique::None).defaults;
+        } else if (m.pass == Measurement::Pass::Exact) {
             // The view's hits come from the kernels it draws with (production: hardware
             // filtering); the reference is the exact walk in the verify flavour, equal to the
             // CPU's.
@@ -244,7 +252,7 @@ struct PreviewRenderer::Impl {
             material.params = info(Technique::Exact).defaults;
             o.kernels = KernelFlavour::Verify;
         }
-        const QRect& box = m.boxes[m.next++];
+        const QRect& box = m.passBoxes()[m.next++];
         f->glEnable(GL_SCISSOR_TEST);
         // GL counts rows from the bottom.
         f->glScissor(box.x(), surfaceTarget->size().y - box.y() - box.height(), box.width(),
@@ -402,6 +410,7 @@ Status PreviewRenderer::beginMeasure(const PreviewScene& scene, QSize pixels, do
     d.measurement->frameMs = frameMs;
     d.measurement->boxes =
         scene.overlays.heatMap ? bands(size.x, size.y) : sampleBoxes(size.x, size.y);
+    d.measurement->whole = {QRect(0, 0, size.x, size.y)};
     return success();
 }
 
@@ -438,12 +447,15 @@ std::optional<Result<PreviewStats>> PreviewRenderer::measureStep(double sliceMs)
             f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
             return done(s.error());
         }
-        if (m.next == m.boxes.size()) {
+        if (m.next == m.passBoxes().size()) {
             Image image = d.surfaceTarget->read();
-            if (m.reference) {
+            if (m.pass == Measurement::Pass::Exact) {
                 f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
-                const SurfaceErrors errors = compareSurfaces(
-                    m.hits, image, scene.assets->height.width, scene.assets->height.height);
+                const int mapWidth = scene.assets->height.width,
+                          mapHeight = scene.assets->height.height;
+                const VisibleRegion region(m.entry, mapWidth, mapHeight);
+                const SurfaceErrors errors =
+                    compareSurfaces(m.hits, image, mapWidth, mapHeight, &region);
                 stats.fetchesPerPixel = errors.meanFetches;
                 stats.meanError = errors.meanError;
                 stats.p99Error = errors.p99Error;
@@ -451,12 +463,18 @@ std::optional<Result<PreviewStats>> PreviewRenderer::measureStep(double sliceMs)
                 stats.otherSurface = errors.otherSurface;
                 stats.pixels = errors.pixels;
                 stats.steepPixels = errors.steepPixels;
+                stats.offRegionPixels = errors.offRegionPixels;
                 stats.valid = true;
                 m_heatMap = scene.overlays.heatMap ? heatMapImage(errors) : QImage();
                 return done(stats);
             }
-            m.hits = std::move(image);
-            m.reference = true;
+            if (m.pass == Measurement::Pass::Entry) {
+                m.entry = std::move(image);
+                m.pass = Measurement::Pass::View;
+            } else {
+                m.hits = std::move(image);
+                m.pass = Measurement::Pass::Exact;
+            }
             m.next = 0;
             d.surfaceTarget->bind();
         }

@@ -36,12 +36,13 @@ public:
                                       unsigned fbo, double budgetMs);
     // Fetches per pixel and the error against `exact`, rendered at the view's own resolution (the
     // marching techniques' height level follows each pixel's footprint): over every pixel when
-    // the heat map is on (and makes it), else over a stratified sample of boxes of the view.
-    // Two extra passes, at 8192² 0.2-0.4 s on llvmpipe: drawn a slice at a time, so the event
-    // loop runs between. beginMeasure() starts over; each measureStep() draws at least one box,
-    // and no box it expects to take it past `sliceMs` (measureBoxMs: the dearest box so far), and
-    // returns the figures once both passes are done (not valid while the maps upload), else
-    // nothing yet.
+    // the heat map is on (and makes it), else over a stratified sample of boxes of the view; a
+    // pixel counts where exact's hit lies on the surface the view shows (VisibleRegion.h). Two
+    // extra passes, at 8192² 0.2-0.4 s on llvmpipe, and a cheap one of the surface's own uv over
+    // the whole view (no tracing): drawn a slice at a time, so the event loop runs between.
+    // beginMeasure() starts over; each measureStep() draws at least one box, and no box it
+    // expects to take it past `sliceMs` (measureBoxMs: the dearest box so far), and returns the
+    // figures once every pass is done (not valid while the maps upload), else nothing yet.
     Status beginMeasure(const PreviewScene& scene, QSize pixels, double frameMs);
     std::optional<Result<PreviewStats>> measureStep(double sliceMs);
     double measureBoxMs() const;
