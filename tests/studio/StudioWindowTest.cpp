@@ -54,19 +54,21 @@ std::string writeRamp(const QTemporaryDir& dir, const char* name, int size) {
 // Correlation of the heat legend's labels in `grab` with the labels drawn upright (or mirrored
 // top to bottom) in white on black with the preview's font, where PreviewWidget puts them.
 double legendLabelMatch(const PreviewWidget* preview, const QImage& grab, bool mirrored) {
-    const QFontMetrics fm(preview->font());
-    const int h = fm.height();
-    const QRect bar(h / 2, preview->height() - 2 * h, 8 * h, h / 2);
-    const QRect labels(bar.left(), bar.bottom() + 2, bar.width(), h);
+    // The stops' labels, in one row under the bar (the unit beside the bar is left out: the
+    // rectangle holding both would hold some of the bar).
+    HeatLegendLayout legend = preview->heatLegend();
+    legend.labels.pop_back();
+    QRect labels;
+    for (const HeatLegendLayout::Label& label : legend.labels)
+        labels = labels.united(label.rect);
     QImage expected(labels.size(), QImage::Format_RGB32);
     expected.fill(Qt::black);
     QPainter p(&expected);
     p.setFont(preview->font());
     p.setPen(Qt::white);
-    const QRect local(QPoint(0, 0), labels.size());
-    p.drawText(local, Qt::AlignLeft, QStringLiteral("0"));
-    p.drawText(local, Qt::AlignHCenter, QStringLiteral("1"));
-    p.drawText(local, Qt::AlignRight, QStringLiteral("≥2 texels"));
+    for (const HeatLegendLayout::Label& label : legend.labels)
+        p.drawText(label.rect.translated(-labels.topLeft()), Qt::AlignLeft | Qt::AlignVCenter,
+                   label.text);
     p.end();
     if (mirrored)
         expected = expected.mirrored(false, true);

@@ -2,13 +2,13 @@
 
 #include "parallax/render/RenderTarget.h" // parallax-render
 #include "preview/FramePacer.h"
+#include "preview/HeatLegend.h"
 #include "preview/PreviewRenderer.h"
 #include "preview/ViewInteraction.h"
 #include "widgets/Hints.h"
 
 #include <QElapsedTimer>
 #include <QKeyEvent>
-#include <QLinearGradient>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
@@ -280,7 +280,7 @@ void PreviewWidget::paintGL() {
 void PreviewWidget::drawOverlays(QPainter& painter, bool heatMap, bool message) {
     painter.setFont(font());
     if (heatMap)
-        drawHeatLegend(painter);
+        drawHeatLegend(painter, heatLegend());
     if (m_scene.overlays.wipe) {
         const double x = m_scene.overlays.wipePosition * width();
         painter.setPen(QPen(Qt::white, 2));
@@ -304,23 +304,8 @@ void PreviewWidget::drawOverlays(QPainter& painter, bool heatMap, bool message) 
     }
 }
 
-void PreviewWidget::drawHeatLegend(QPainter& painter) {
-    // The heat map's scale, bottom left: what blue, green, yellow and red mean.
-    const QFontMetrics fm(font());
-    const int h = fm.height();
-    const QRect bar(h / 2, height() - 2 * h, 8 * h, h / 2);
-    QLinearGradient gradient(bar.topLeft(), bar.topRight());
-    gradient.setColorAt(0.0, QColor(44, 95, 214));
-    gradient.setColorAt(0.25, QColor(63, 179, 79));
-    gradient.setColorAt(0.5, QColor(240, 208, 58));
-    gradient.setColorAt(1.0, QColor(216, 52, 44));
-    painter.fillRect(bar.adjusted(-4, -4, 4, h + 4), QColor(0, 0, 0, 150));
-    painter.fillRect(bar, gradient);
-    painter.setPen(Qt::white);
-    const QRect labels(bar.left(), bar.bottom() + 2, bar.width(), h);
-    painter.drawText(labels, Qt::AlignLeft, QStringLiteral("0"));
-    painter.drawText(labels, Qt::AlignHCenter, QStringLiteral("1"));
-    painter.drawText(labels, Qt::AlignRight, tr("≥2 texels"));
+HeatLegendLayout PreviewWidget::heatLegend() const {
+    return layoutHeatLegend(QFontMetrics(font()), size());
 }
 
 void PreviewWidget::mousePressEvent(QMouseEvent* event) {

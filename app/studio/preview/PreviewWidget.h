@@ -6,6 +6,7 @@
 
 #include "parallax/Result.h"
 #include "parallax/image/Image.h"
+#include "preview/HeatLegend.h"
 #include "preview/PreviewScene.h"
 
 #include <QElapsedTimer>
@@ -53,6 +54,9 @@ public:
     // messages): a picture to save. Fails without a live preview or over the GL's limits.
     Result<Image> renderImage(const PreviewScene& scene, QSize pixels);
 
+    // Where the heat map's scale is drawn, at this view's size and font (tests).
+    HeatLegendLayout heatLegend() const;
+
     QSize sizeHint() const override { return {320, 240}; }
 
 signals:
@@ -83,7 +87,6 @@ private:
     void measureSlice();
     void dropMeasurement();
     void drawOverlays(class QPainter& painter, bool heatMap, bool message);
-    void drawHeatLegend(class QPainter& painter);
 
     PreviewScene m_scene;
     PreviewStats m_stats;

@@ -139,6 +139,10 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
 void MainWindow::createPanels(const QString& liveReason) {
     m_viewports = new ViewportGrid(m_document, liveReason, this);
     setCentralWidget(m_viewports);
+    // The side docks keep the window's full height: the Compare dock opens under the viewports,
+    // not across the bottom of the Maps and Parameters panels.
+    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
 
     auto* parameters = new QWidget;
     auto* parametersLayout = new QVBoxLayout(parameters);
