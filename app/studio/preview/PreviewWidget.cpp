@@ -345,7 +345,8 @@ void PreviewWidget::mouseReleaseEvent(QMouseEvent*) {
 }
 
 void PreviewWidget::mouseDoubleClickEvent(QMouseEvent* event) {
-    emit cameraDragged(defaultCamera());
+    emit cameraDragged(framed(defaultCamera(), m_scene.view,
+                              height() > 0 ? float(width()) / float(height()) : 1.0f));
     event->accept();
 }
 

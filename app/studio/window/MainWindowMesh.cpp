@@ -96,7 +96,7 @@ bool MainWindow::loadMeshWith(const QString& path, int uvSet, bool remembered) {
     view.meshFile = QFileInfo(path).absoluteFilePath();
     view.meshUvSet = loaded->uvSet;
     view.meshUvSets = loaded->uvSets;
-    m_viewports->editView(view);
+    m_viewports->showMesh(view);
     m_recentMeshes->add(path);
     QSettings().setValue(meshUvSetKey(path), view.meshUvSet);
     QString message = QString::fromStdString(loaded->summary());
