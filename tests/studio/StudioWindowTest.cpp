@@ -52,7 +52,7 @@ std::string writeRamp(const QTemporaryDir& dir, const char* name, int size) {
 }
 
 // Correlation of the heat legend's labels in `grab` with the labels drawn upright (or mirrored
-// top to bottom) in white on black with the preview's font, where PreviewWidget puts them.
+// top to bottom) in white on black with the preview's font, where its layout puts them.
 double legendLabelMatch(const PreviewWidget* preview, const QImage& grab, bool mirrored) {
     // The stops' labels, in one row under the bar (the unit beside the bar is left out: the
     // rectangle holding both would hold some of the bar).
@@ -361,7 +361,8 @@ private slots:
     }
 
     // A view closed while its maps go up does not wait for the worker (1.1-1.4 s at 8192² on
-    // llvmpipe): the worker finishes alone and releases what it made.
+    // llvmpipe), and the worker does not upload maps nobody wants: one abandoned before it began
+    // is skipped (the upload thread is free for the next), one abandoned after is released there.
     void closingAViewDoesNotWaitForItsUpload() {
         PreviewRenderer::setBackgroundUploadTexels(0);
         const auto restore = qScopeGuard([] {
@@ -372,7 +373,7 @@ private slots:
         QVERIFY(w);
         PreviewWidget* preview = w->viewports()->viewport(0)->preview();
         QVERIFY(waitForFigures(preview));
-        const int completed = MapUpload::completed(), discarded = MapUpload::discarded();
+        const int completed = MapUpload::completed(), skipped = MapUpload::skipped();
         MapUpload::holdWorkers(true);
         const std::string ramp = writeRamp(m_dir, "closed_height.png", 256);
         QVERIFY(!ramp.empty());
@@ -381,8 +382,39 @@ private slots:
         w.reset(); // the worker is held: this returns at once only if it does not wait for it
         QCOMPARE(MapUpload::completed(), completed);
         MapUpload::holdWorkers(false);
-        QTRY_COMPARE(MapUpload::discarded(), discarded + 1);
+        QTRY_COMPARE(MapUpload::skipped(), skipped + 1);
         QCOMPARE(MapUpload::completed(), completed);
+    }
+
+    // Maps replaced while their upload waits for the worker are never uploaded: the replacing
+    // maps go up next (before, the worker uploaded both, one after the other).
+    void aReplacedUploadIsSkipped() {
+        PreviewRenderer::setBackgroundUploadTexels(0);
+        const auto restore = qScopeGuard([] {
+            MapUpload::holdWorkers(false);
+            PreviewRenderer::setBackgroundUploadTexels(4096u * 4096u);
+        });
+        auto w = makeWindow(1);
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        const int completed = MapUpload::completed(), skipped = MapUpload::skipped();
+        MapUpload::holdWorkers(true);
+        const std::string first = writeRamp(m_dir, "first_height.png", 128);
+        const std::string second = writeRamp(m_dir, "second_height.png", 96);
+        QVERIFY(!first.empty() && !second.empty());
+        QVERIFY(w->loadMap(MapKind::Height, QString::fromStdString(first)));
+        QVERIFY(QTest::qWaitFor([&] { return preview->uploading(); }));
+        const int frames = preview->framesRendered();
+        QVERIFY(w->loadMap(MapKind::Height, QString::fromStdString(second)));
+        // A frame of the second maps (the sample's standing in) drops the first upload.
+        QVERIFY(waitForFrame(preview, frames));
+        QVERIFY(preview->uploading());
+        MapUpload::holdWorkers(false);
+        QTRY_COMPARE(MapUpload::skipped(), skipped + 1);
+        QVERIFY(waitForFigures(preview));
+        QCOMPARE(MapUpload::completed(), completed + 1);
+        QCOMPARE(preview->gpuMaterial()->heightField().width, 96);
     }
 
     // A row makes its thumbnail when its map changes, not on every edit of the material (an
