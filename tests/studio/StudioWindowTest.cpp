@@ -16,6 +16,7 @@
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/render/GpuMaterial.h"
+#include "parallax/render/ShaderCache.h"
 #include "preview/FramePacer.h"
 #include "preview/PreviewRenderer.h"
 #include "widgets/ImageConvert.h"
@@ -459,6 +460,25 @@ private slots:
                 .scaled(side, side, Qt::KeepAspectRatio, Qt::SmoothTransformation);
         QCOMPARE(shown.convertToFormat(QImage::Format_RGB32),
                  expected.convertToFormat(QImage::Format_RGB32));
+    }
+
+    // Every view draws with one cache of compiled variants (their contexts share programs): a
+    // second view on the same technique compiles nothing (each view compiled its own before, on
+    // the GUI thread: llvmpipe takes hundreds of ms a variant).
+    void viewsShareCompiledVariants() {
+        auto w = makeWindow(1);
+        QVERIFY(w);
+        PreviewWidget* first = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(first));
+        const ShaderCache* cache = first->shaderCache();
+        QVERIFY(cache && cache->size() > 0);
+        const std::size_t compiled = cache->size();
+        w->document()->edit("same technique", [](DocumentState& s) { s.setView(1, s.view(0)); });
+        w->viewports()->setLayoutCount(2);
+        PreviewWidget* second = w->viewports()->viewport(1)->preview();
+        QVERIFY(waitForFigures(second));
+        QCOMPARE(second->shaderCache(), cache);
+        QCOMPARE(cache->size(), compiled);
     }
 
     // The built-in sample is 16-bit, as most artists' maps are: loading one keeps the height

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <vector>
 
 namespace px::studio {
@@ -78,6 +79,21 @@ std::vector<std::weak_ptr<MapUpload>>& runningUploads() {
     static std::vector<std::weak_ptr<MapUpload>> uploads;
     std::erase_if(uploads, [](const std::weak_ptr<MapUpload>& u) { return u.expired(); });
     return uploads;
+}
+
+// The compiled variants of the views whose contexts share objects (AA_ShareOpenGLContexts: every
+// view's), one cache per share group: a variant compiles once however many views draw it. A new
+// view (Ctrl+4 opens three) used to compile every variant it drew again, on the GUI thread.
+std::shared_ptr<ShaderCache> groupShaderCache() {
+    static std::map<const QOpenGLContextGroup*, std::weak_ptr<ShaderCache>> caches;
+    std::erase_if(caches, [](const auto& entry) { return entry.second.expired(); });
+    const QOpenGLContextGroup* group = QOpenGLContext::currentContext()->shareGroup();
+    std::shared_ptr<ShaderCache> cache = caches[group].lock();
+    if (!cache) {
+        cache = std::make_shared<ShaderCache>();
+        caches[group] = cache;
+    }
+    return cache;
 }
 
 // Uploads of more texels than this go up on a worker (jobs/MapUpload.h): 4096², about 0.3 s on
@@ -278,7 +294,7 @@ struct PreviewRenderer::Impl {
 PreviewRenderer::~PreviewRenderer() = default;
 
 Result<std::unique_ptr<PreviewRenderer>> PreviewRenderer::create() {
-    Result<std::unique_ptr<Renderer>> renderer = Renderer::create();
+    Result<std::unique_ptr<Renderer>> renderer = Renderer::create(groupShaderCache());
     if (!renderer)
         return renderer.error();
     std::unique_ptr<PreviewRenderer> preview(new PreviewRenderer);
@@ -519,6 +535,10 @@ void PreviewRenderer::setBackgroundUploadTexels(std::size_t texels) {
 
 const GpuMaterial* PreviewRenderer::gpuMaterial() const {
     return m_impl->gpu;
+}
+
+const ShaderCache& PreviewRenderer::shaders() const {
+    return m_impl->renderer->shaders();
 }
 
 std::optional<float> PreviewRenderer::uniformValue(const std::string& name) {

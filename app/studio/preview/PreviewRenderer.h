@@ -17,7 +17,8 @@
 
 namespace px {
 class GpuMaterial;
-}
+class ShaderCache;
+} // namespace px
 
 namespace px::studio {
 
@@ -52,6 +53,8 @@ public:
     std::optional<float> uniformValue(const std::string& name);
     // The maps this view last drew with (views showing the same maps share one), for tests.
     const GpuMaterial* gpuMaterial() const;
+    // The compiled variants this view draws with, shared by every view (tests).
+    const ShaderCache& shaders() const;
 
     // Big maps go up on a worker (jobs/MapUpload.h): meanwhile draw() shows the maps there are
     // (or the background, where they cannot stand in) and measure() measures nothing.

@@ -157,6 +157,10 @@ const GpuMaterial* PreviewWidget::gpuMaterial() const {
     return m_renderer ? m_renderer->gpuMaterial() : nullptr;
 }
 
+const ShaderCache* PreviewWidget::shaderCache() const {
+    return m_renderer ? &m_renderer->shaders() : nullptr;
+}
+
 bool PreviewWidget::uploading() const {
     return m_renderer && m_renderer->uploading();
 }

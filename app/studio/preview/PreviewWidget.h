@@ -17,7 +17,8 @@
 
 namespace px {
 class GpuMaterial;
-}
+class ShaderCache;
+} // namespace px
 
 namespace px::studio {
 
@@ -43,6 +44,9 @@ public:
     std::optional<float> uniformValue(const QString& name);
     // The maps the last frame drew with; views showing the same maps share them (tests).
     const GpuMaterial* gpuMaterial() const;
+    // The compiled variants it draws with, one cache for every view (tests); null before the
+    // first frame.
+    const ShaderCache* shaderCache() const;
     // Whether the scene's maps are still going up on a worker (the view draws what it has).
     bool uploading() const;
     // Turns of the event loop the figures have taken so far (tests), and the drawing each takes
