@@ -25,15 +25,18 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QMessageBox>
 #include <QOpenGLContext>
 #include <QPainter>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QToolButton>
 #include <array>
 
@@ -460,6 +463,33 @@ private slots:
                 .scaled(side, side, Qt::KeepAspectRatio, Qt::SmoothTransformation);
         QCOMPARE(shown.convertToFormat(QImage::Format_RGB32),
                  expected.convertToFormat(QImage::Format_RGB32));
+    }
+
+    // The bake's line says how long the user waited for its map, not only the bake: from Bake
+    // to the view drawn with it (a baked normal map needs the view's normal-map shader variant,
+    // compiled then: far longer than the bake at this size).
+    void bakeTimeSaysTheWait() {
+        auto w = makeWindow(1);
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        QVERIFY(!w->document()->state().hasMap(MapKind::Normal));
+        QElapsedTimer clock;
+        clock.start();
+        w->startBake(BakeKind::Normal);
+        const QRegularExpression line("Baked the normal map in ([0-9.]+) s, shown ([0-9.]+) s "
+                                      "after Bake\\.");
+        QRegularExpressionMatch m;
+        QTRY_VERIFY_WITH_TIMEOUT((m = line.match(w->mapsPanel()->bakeStatus())).hasMatch(), 60000);
+        const double elapsed = clock.elapsed() / 1000.0;
+        const double bake = m.captured(1).toDouble(), shown = m.captured(2).toDouble();
+        qInfo("normal map baked in %.2f s, shown %.2f s after Bake (%.2f s here)", bake, shown,
+              elapsed);
+        QVERIFY(w->document()->state().hasMap(MapKind::Normal));
+        QVERIFY(bake <= shown);
+        QVERIFY(shown <= elapsed + 0.01); // the line came after the frame it names
+        QVERIFY(preview->framesRendered() > 0 && !preview->uploading());
+        QVERIFY(w->statusBar()->currentMessage().contains(m.captured(0).chopped(1)));
     }
 
     // Every view draws with one cache of compiled variants (their contexts share programs): a

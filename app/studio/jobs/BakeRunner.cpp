@@ -83,6 +83,7 @@ std::optional<BakeKind> BakeRunner::current() const {
 
 void BakeRunner::start(const BakeRequest& request) {
     m_queue.push_back(request);
+    m_queue.back().asked = std::chrono::steady_clock::now();
     if (!m_running)
         next();
 }

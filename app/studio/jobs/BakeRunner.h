@@ -13,6 +13,7 @@
 #include <QString>
 #include <QThreadPool>
 #include <atomic>
+#include <chrono>
 #include <deque>
 #include <memory>
 
@@ -25,6 +26,8 @@ QString bakeTitle(BakeKind kind); // "normal map", "cone map", "relaxed cone map
 
 struct BakeRequest {
     BakeKind kind = BakeKind::Cone;
+    // When it was asked for (BakeRunner::start): the wait a user sees runs from here.
+    std::chrono::steady_clock::time_point asked;
     std::shared_ptr<const MaterialAssets> source; // its height map is baked
     WrapMode wrap = WrapMode::Repeat;
     NormalBakeOptions normal; // for BakeKind::Normal
@@ -36,8 +39,8 @@ struct BakeOutcome {
     ConeMap cone;  // BakeKind::Cone and RelaxedCone
     QString error; // empty on success
     bool cancelled = false;
-    double seconds = 0.0;
-    int threadNice = 0; // the bake's thread's nice value while it baked (BackgroundPriority.h)
+    double seconds = 0.0; // the bake itself, on its thread
+    int threadNice = 0;   // the bake's thread's nice value while it baked (BackgroundPriority.h)
 };
 
 class BakeRunner : public QObject {
