@@ -364,10 +364,11 @@ private slots:
                  qPrintable(text(preview->stats()) + ", " + text(interrupted) + " interrupted"));
     }
 
-    // A view closed while its maps go up does not wait for the worker (1.1-1.4 s at 8192² on
-    // llvmpipe), and the worker does not upload maps nobody wants: one abandoned before it began
-    // is skipped (the upload thread is free for the next), one abandoned after is released there.
-    void closingAViewDoesNotWaitForItsUpload() {
+    // The worker does not upload maps nobody wants: maps replaced while their upload waits for
+    // it are skipped and the replacing ones go up next (before, the worker uploaded both in
+    // turn); a view closed while its maps go up does not wait for the worker (1.1-1.4 s at 8192²
+    // on llvmpipe), and the upload it abandoned is skipped too.
+    void abandonedUploadsAreNotRun() {
         PreviewRenderer::setBackgroundUploadTexels(0);
         const auto restore = qScopeGuard([] {
             MapUpload::holdWorkers(false);
@@ -377,36 +378,12 @@ private slots:
         QVERIFY(w);
         PreviewWidget* preview = w->viewports()->viewport(0)->preview();
         QVERIFY(waitForFigures(preview));
-        const int completed = MapUpload::completed(), skipped = MapUpload::skipped();
-        MapUpload::holdWorkers(true);
-        const std::string ramp = writeRamp(m_dir, "closed_height.png", 256);
-        QVERIFY(!ramp.empty());
-        QVERIFY(w->loadMap(MapKind::Height, QString::fromStdString(ramp)));
-        QVERIFY(QTest::qWaitFor([&] { return preview->uploading(); }));
-        w.reset(); // the worker is held: this returns at once only if it does not wait for it
-        QCOMPARE(MapUpload::completed(), completed);
-        MapUpload::holdWorkers(false);
-        QTRY_COMPARE(MapUpload::skipped(), skipped + 1);
-        QCOMPARE(MapUpload::completed(), completed);
-    }
-
-    // Maps replaced while their upload waits for the worker are never uploaded: the replacing
-    // maps go up next (before, the worker uploaded both, one after the other).
-    void aReplacedUploadIsSkipped() {
-        PreviewRenderer::setBackgroundUploadTexels(0);
-        const auto restore = qScopeGuard([] {
-            MapUpload::holdWorkers(false);
-            PreviewRenderer::setBackgroundUploadTexels(4096u * 4096u);
-        });
-        auto w = makeWindow(1);
-        QVERIFY(w);
-        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
-        QVERIFY(waitForFigures(preview));
-        const int completed = MapUpload::completed(), skipped = MapUpload::skipped();
+        int completed = MapUpload::completed(), skipped = MapUpload::skipped();
         MapUpload::holdWorkers(true);
         const std::string first = writeRamp(m_dir, "first_height.png", 128);
         const std::string second = writeRamp(m_dir, "second_height.png", 96);
-        QVERIFY(!first.empty() && !second.empty());
+        const std::string third = writeRamp(m_dir, "closed_height.png", 256);
+        QVERIFY(!first.empty() && !second.empty() && !third.empty());
         QVERIFY(w->loadMap(MapKind::Height, QString::fromStdString(first)));
         QVERIFY(QTest::qWaitFor([&] { return preview->uploading(); }));
         const int frames = preview->framesRendered();
@@ -419,6 +396,17 @@ private slots:
         QVERIFY(waitForFigures(preview));
         QCOMPARE(MapUpload::completed(), completed + 1);
         QCOMPARE(preview->gpuMaterial()->heightField().width, 96);
+
+        completed = MapUpload::completed();
+        skipped = MapUpload::skipped();
+        MapUpload::holdWorkers(true);
+        QVERIFY(w->loadMap(MapKind::Height, QString::fromStdString(third)));
+        QVERIFY(QTest::qWaitFor([&] { return preview->uploading(); }));
+        w.reset(); // the worker is held: this returns at once only if it does not wait for it
+        QCOMPARE(MapUpload::completed(), completed);
+        MapUpload::holdWorkers(false);
+        QTRY_COMPARE(MapUpload::skipped(), skipped + 1);
+        QCOMPARE(MapUpload::completed(), completed);
     }
 
     // A row makes its thumbnail when its map changes, not on every edit of the material (an
@@ -490,6 +478,44 @@ private slots:
         QVERIFY(shown <= elapsed + 0.01); // the line came after the frame it names
         QVERIFY(preview->framesRendered() > 0 && !preview->uploading());
         QVERIFY(w->statusBar()->currentMessage().contains(m.captured(0).chopped(1)));
+    }
+
+    // A variant the view's context never drew waits while the user acts (its first draw holds
+    // the event loop while llvmpipe compiles it: after Ctrl+4, clicks waited for three views'
+    // variants in turn), and is drawn once input pauses. The pacer's clock stands still here
+    // but for the steps the test makes.
+    void newVariantsWaitForTheUserToPause() {
+        auto w = makeWindow(1);
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        double now = 1000.0;
+        FramePacer::setClock([&now] { return now; });
+        const auto restore = qScopeGuard([] { FramePacer::setClock({}); });
+        FramePacer::noteInput(); // a click, as the user goes on
+        const std::size_t compiled = preview->shaderCache()->size();
+        const int frames = preview->framesRendered();
+        w->document()->edit("secant", [](DocumentState& s) {
+            s.setView(0, {Technique::Secant, info(Technique::Secant).defaults});
+        });
+        // A turn of the event loop 20 ms on: past the breath after the last (FramePacer).
+        auto turn = [&] {
+            now += 20.0;
+            preview->repaint();
+            QCoreApplication::processEvents(); // the turn ends
+        };
+        for (int i = 0; i < 8; ++i) // 160 ms of turns
+            turn();
+        QCOMPARE(preview->framesRendered(), frames);
+        QCOMPARE(preview->shaderCache()->size(), compiled); // not even compiled
+        now += FramePacer::kInputQuietMs;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                turn();
+                return preview->framesRendered() > frames;
+            },
+            60000));
+        QVERIFY(preview->shaderCache()->size() > compiled);
     }
 
     // Every view draws with one cache of compiled variants (their contexts share programs): a

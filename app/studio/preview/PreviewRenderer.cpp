@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace px::studio {
@@ -127,6 +128,21 @@ struct PreviewRenderer::Impl {
     std::optional<RenderTarget> surfaceTarget; // float (u, v, t, fetches), the view's size
     std::shared_ptr<const PrefilteredEnvironment> uploadedEnvironment; // what gpuEnvironment holds
     std::unique_ptr<GpuEnvironment> gpuEnvironment;
+    // The variants this view's context has drawn: a new one's first draw is put off while the
+    // user acts (FramePacer::inputRecently), as llvmpipe compiles it for this context then.
+    std::set<std::uint32_t> drawnVariants;
+    bool shownOnce = false;    // a whole frame has been shown
+    bool measureWaits = false; // the measurement's next pass waits for the user to pause
+
+    bool waitForInputPause(const std::vector<VariantKey>& keys) const {
+        return FramePacer::inputRecently() && std::ranges::any_of(keys, [&](const VariantKey& k) {
+                   return !drawnVariants.contains(k.bits());
+               });
+    }
+    void drew(const std::vector<VariantKey>& keys) {
+        for (const VariantKey& k : keys)
+            drawnVariants.insert(k.bits());
+    }
 
     Status syncEnvironment(const PreviewScene& scene) {
         if (uploadedEnvironment == scene.view.environment)
@@ -245,14 +261,8 @@ struct PreviewRenderer::Impl {
 
     std::optional<Measurement> measurement;
 
-    // Draws box `m.next` of the current pass (the target bound) and moves on.
-    Status drawNextBox(Measurement& m) {
-        QOpenGLFunctions* f = gl();
-        if (m.next == 0) {
-            f->glDisable(GL_SCISSOR_TEST);
-            f->glClearColor(-1.0f, -1.0f, -1.0f, -1.0f);
-            f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        }
+    // What the current pass of `m` draws with.
+    std::pair<Material, DrawOptions> passDraw(const Measurement& m) const {
         DrawOptions o = options(m.scene);
         o.output = ShaderOutput::Surface;
         o.clear = true; // inside the box
@@ -268,6 +278,24 @@ struct PreviewRenderer::Impl {
             material.params = info(Technique::Exact).defaults;
             o.kernels = KernelFlavour::Verify;
         }
+        return {material, o};
+    }
+
+    VariantKey passVariant(const Measurement& m) const {
+        const auto [material, o] = passDraw(m);
+        return renderer->variantFor(*gpu, material, o);
+    }
+
+    // Draws box `m.next` of the current pass (the target bound) and moves on.
+    Status drawNextBox(Measurement& m) {
+        QOpenGLFunctions* f = gl();
+        if (m.next == 0) {
+            f->glDisable(GL_SCISSOR_TEST);
+            f->glClearColor(-1.0f, -1.0f, -1.0f, -1.0f);
+            f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        }
+        const auto [material, o] = passDraw(m);
+        drew({renderer->variantFor(*gpu, material, o)});
         const QRect& box = m.passBoxes()[m.next++];
         f->glEnable(GL_SCISSOR_TEST);
         // GL counts rows from the bottom.
@@ -387,8 +415,24 @@ Result<FramePacer::Step> PreviewRenderer::drawStep(const PreviewScene& scene, st
         m_pacer.forget(); // the maps drawn next cost what they cost
         return FramePacer::Step{true, 0.0, 0, false};
     }
+    Impl& d = *m_impl;
+    // A variant this context never drew waits while the user acts: its first draw would hold
+    // the event loop (FramePacer::inputRecently). Meanwhile the view shows what it had.
+    const DrawOptions options = d.options(scene);
+    std::vector<VariantKey> keys{d.renderer->variantFor(*d.gpu, scene.material, options)};
+    if (scene.overlays.wipe) {
+        Material b = scene.material;
+        b.technique = scene.overlays.wipeTechnique;
+        b.params = info(b.technique).defaults;
+        keys.push_back(d.renderer->variantFor(*d.gpu, b, options));
+    }
+    const bool waits = d.waitForInputPause(keys);
+    if (waits && !d.shownOnce) {
+        gl()->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        clearToBackground(size);
+        return FramePacer::Step{false, 0.0, 0, false};
+    }
     // What the cost per pixel depends on beyond the camera and the sliders.
-    const Impl& d = *m_impl;
     std::uint64_t key = kFnv1aOffset;
     auto mix = [&key](std::uint64_t v) { key = fnv1a(&v, sizeof v, key); };
     mix(static_cast<std::uint64_t>(scene.material.technique));
@@ -399,8 +443,11 @@ Result<FramePacer::Step> PreviewRenderer::drawStep(const PreviewScene& scene, st
     mix(scene.view.showEnvironment ? 1 : 0);
     mix((std::uint64_t(size.x) << 32) | std::uint64_t(size.y));
     Result<FramePacer::Step> step =
-        m_pacer.step(serial, key, size, fbo, budgetMs,
+        m_pacer.step(serial, key, size, fbo, waits ? 0.0 : budgetMs,
                      [&](glm::ivec2 at, QRect rows) { return drawScene(scene, at, rows); });
+    if (step && !waits && budgetMs > 0.0)
+        d.drew(keys);
+    d.shownOnce = d.shownOnce || (step && step->complete);
     // A step may draw nothing (the frame is whole): QPainter still needs the neutral state the
     // measurement's passes do not leave.
     gl()->glDisable(GL_DEPTH_TEST);
@@ -458,6 +505,12 @@ std::optional<Result<PreviewStats>> PreviewRenderer::measureStep(double sliceMs)
     QOpenGLFunctions* f = gl();
     d.surfaceTarget->bind();
     for (;;) {
+        // A pass on a variant this context never drew waits while the user acts, as frames do.
+        d.measureWaits = m.next == 0 && d.waitForInputPause({d.passVariant(m)});
+        if (d.measureWaits) {
+            f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            return std::nullopt;
+        }
         const auto boxStart = Clock::now();
         if (Status s = d.drawNextBox(m); !s) {
             f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -514,6 +567,10 @@ void PreviewRenderer::cancelMeasure() {
 
 bool PreviewRenderer::measuring() const {
     return m_impl->measurement.has_value();
+}
+
+bool PreviewRenderer::measureWaitsForInput() const {
+    return m_impl->measureWaits;
 }
 
 bool PreviewRenderer::uploading() const {

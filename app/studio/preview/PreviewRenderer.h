@@ -49,6 +49,9 @@ public:
     double measureBoxMs() const;
     void cancelMeasure();
     bool measuring() const;
+    // The last measureStep drew nothing: its next pass's variant waits for the user to pause
+    // (FramePacer::inputRecently), as a frame's does.
+    bool measureWaitsForInput() const;
     QImage heatMap() const { return m_heatMap; }
     std::optional<float> uniformValue(const std::string& name);
     // The maps this view last drew with (views showing the same maps share one), for tests.

@@ -7,11 +7,13 @@
 #include "preview/ViewInteraction.h"
 #include "widgets/Hints.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
+#include <QPointer>
 #include <QTimer>
 #include <QWheelEvent>
 #include <algorithm>
@@ -26,6 +28,34 @@ constexpr double kWipeGrab = 8.0;
 double g_measureSliceMs = 30.0;
 // Drawing waits this long after the turn that drew last (FramePacer::endTurn).
 constexpr qint64 kBreathMs = 10;
+
+// Notes the user's input for FramePacer::inputRecently, whatever widget it goes to.
+class InputWatch : public QObject {
+public:
+    using QObject::QObject;
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        switch (event->type()) {
+        case QEvent::MouseButtonPress:
+        case QEvent::MouseButtonDblClick:
+        case QEvent::KeyPress:
+        case QEvent::Wheel:
+        case QEvent::TouchBegin:
+            FramePacer::noteInput();
+            break;
+        default:
+            break;
+        }
+        return QObject::eventFilter(watched, event);
+    }
+};
+
+void watchInput() {
+    static QPointer<InputWatch> watch;
+    if (!watch && qApp) {
+        watch = new InputWatch(qApp);
+        qApp->installEventFilter(watch);
+    }
+}
 } // namespace
 
 void PreviewWidget::setMeasureSliceMs(double ms) {
@@ -33,6 +63,7 @@ void PreviewWidget::setMeasureSliceMs(double ms) {
 }
 
 PreviewWidget::PreviewWidget(QWidget* parent) : QOpenGLWidget(parent) {
+    watchInput();
     setMinimumSize(96, 72);
     setFocusPolicy(Qt::ClickFocus);
     setStatusTip(hints::viewportHelp());
@@ -131,7 +162,8 @@ void PreviewWidget::measureSlice() {
         this, [] { FramePacer::endTurn(); }, Qt::QueuedConnection);
     ++m_measureSlices;
     if (!measured) {
-        m_sliceTimer->start(0); // the rest after the events waiting
+        // The rest after the events waiting; later while a pass waits for the user to pause.
+        m_sliceTimer->start(m_renderer->measureWaitsForInput() ? 50 : 0);
         return;
     }
     const Result<PreviewStats>& stats = *measured;
