@@ -21,7 +21,8 @@ QString Viewport::figuresExplained() {
               "the exact intersection, in texels (mean, 99th percentile and max), "
               "and the share of pixels whose hit lies on another surface (more than "
               "2 texels from the exact one): a few such pixels lift the mean above "
-              "the p99.");
+              "the p99. Left out: pixels seen steeper than 89°, and pixels whose exact "
+              "hit lies off the surface this view shows (near a mesh's silhouette).");
 }
 
 Viewport::Viewport(int index, MaterialDocument* document, const QString& liveReason,

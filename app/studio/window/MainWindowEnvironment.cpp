@@ -22,17 +22,15 @@ namespace {
 const QString kEnvironmentFilter =
     QObject::tr("Environments (*.hdr *.exr *.tif *.tiff *.png);;All files (*)");
 
-// How a material file was last lit in the editor (its settings, as its mesh: MainWindowMesh.cpp).
-// The environment is "sky", a file, or "" for none; a material never shown has no key.
-QString environmentKey(const QString& material) {
-    return settingsKeyForFile("previewEnvironment", material);
-}
-QString exposureKey(const QString& material) {
-    return settingsKeyForFile("previewExposure", material);
-}
-QString showEnvironmentKey(const QString& material) {
-    return settingsKeyForFile("previewShowEnvironment", material);
-}
+// How a material file was last lit in the editor (its settings, as its mesh: MainWindowMesh.cpp):
+// "previewEnvironment" is "sky", a file, or "" for none; a material never shown has no key.
+struct LightKeys {
+    QString environment, exposure, showEnvironment;
+    explicit LightKeys(const QString& material)
+        : environment(settingsKeyForFile("previewEnvironment", material)),
+          exposure(settingsKeyForFile("previewExposure", material)),
+          showEnvironment(settingsKeyForFile("previewShowEnvironment", material)) {}
+};
 
 QString environmentOf(const SharedView& view) {
     return view.environment ? view.environmentName : QString();
@@ -88,24 +86,26 @@ void MainWindow::rememberMaterialLight() {
     if (material.isEmpty() || m_restoringPreview)
         return;
     const SharedView& view = m_viewports->activeView();
+    const LightKeys keys(material);
     QSettings settings;
     auto put = [&settings](const QString& key, const QVariant& value) {
         if (settings.value(key) != value)
             settings.setValue(key, value);
     };
-    put(environmentKey(material), environmentOf(view));
-    put(exposureKey(material), double(view.exposure));
-    put(showEnvironmentKey(material), view.showEnvironment);
+    put(keys.environment, environmentOf(view));
+    put(keys.exposure, double(view.exposure));
+    put(keys.showEnvironment, view.showEnvironment);
 }
 
 void MainWindow::restoreMaterialLight() {
     const QString material = m_document->filePath();
+    const LightKeys keys(material);
     const QSettings settings;
-    if (material.isEmpty() || !settings.contains(environmentKey(material)))
+    if (material.isEmpty() || !settings.contains(keys.environment))
         return; // never shown here: the light stays as it is
-    const QString environment = settings.value(environmentKey(material)).toString();
-    const float exposure = settings.value(exposureKey(material), 0.0).toFloat();
-    const bool show = settings.value(showEnvironmentKey(material), true).toBool();
+    const QString environment = settings.value(keys.environment).toString();
+    const float exposure = settings.value(keys.exposure, 0.0).toFloat();
+    const bool show = settings.value(keys.showEnvironment, true).toBool();
     // The environment first (a file that is gone: a message, and the light drawn before stays).
     if (environment != environmentOf(m_viewports->activeView()))
         setEnvironment(environment);
