@@ -140,11 +140,10 @@ private slots:
             w->resizeDocks({dock}, {dockWidth}, Qt::Horizontal);
         QCoreApplication::processEvents();
         TechniquePanel* technique = w->techniquePanel();
-        const int widthBefore = dock->widget() ? qobject_cast<QScrollArea*>(dock->widget())
-                                                     ->widget()
-                                                     ->minimumSizeHint()
-                                                     .width()
-                                               : 0;
+        const int widthBefore =
+            dock->widget()
+                ? qobject_cast<QScrollArea*>(dock->widget())->widget()->minimumSizeHint().width()
+                : 0;
         technique->autoPick()->click(); // measures in the background, the event loop running
         QTRY_VERIFY_WITH_TIMEOUT(technique->autoStatus().contains("resolved"), 120000);
         QCoreApplication::processEvents();

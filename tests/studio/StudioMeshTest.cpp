@@ -180,7 +180,8 @@ private slots:
         QVERIFY2(st.maxError <= 2.0 * planeMax, qPrintable(viewport->statsText()));
         if (st.offRegionPixels > 0)
             QVERIFY(viewport->statsText().contains(
-                QString("%1 px whose exact hit is off the visible surface").arg(st.offRegionPixels)));
+                QString("%1 px whose exact hit is off the visible surface")
+                    .arg(st.offRegionPixels)));
     }
 
     void droppedMeshLoadsAndBadMeshKeepsTheLastOne() {

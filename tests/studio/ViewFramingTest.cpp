@@ -70,7 +70,7 @@ private slots:
             const QString where =
                 QString("%1 at aspect %2: |x| %3, |y| %4").arg(what).arg(aspect).arg(e.x).arg(e.y);
             QVERIFY2(e.inFront && e.x <= 1.0 && e.y <= 1.0, qPrintable(where)); // nothing cut
-            QVERIFY2(std::max(e.x, e.y) >= 0.85, qPrintable(where));             // not lost in it
+            QVERIFY2(std::max(e.x, e.y) >= 0.85, qPrintable(where));            // not lost in it
         };
         // Orbited first: the angles stay, the distance frames the mesh.
         SharedView orbited = grid->activeView();
