@@ -12,6 +12,7 @@
 // Memory is measured here rather than in a unit test: what it reads depends on the GL driver
 // (llvmpipe keeps textures in process memory, a GPU does not).
 
+#include "StudioBenchSupport.h"
 #include "jobs/BakeRunner.h"
 #include "model/MaterialDocument.h"
 #include "parallax/image/ImageFile.h"
@@ -24,8 +25,6 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
-#include <QMetaEnum>
-#include <QResizeEvent>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <algorithm>
@@ -36,6 +35,7 @@
 
 using namespace px;
 using namespace px::studio;
+using namespace px::studio::bench;
 
 namespace {
 
@@ -77,58 +77,6 @@ struct StallWatch {
         timer.start();
     }
 };
-
-// With --slow-events MS: every event whose handling took longer is printed (receiver, type, ms):
-// where the event loop's gaps come from.
-class TracingApplication : public QApplication {
-public:
-    using QApplication::QApplication;
-    qint64 slowMs = 0;
-    bool traceResizes = false; // every widget's resize, to find what re-lays out the views
-    QElapsedTimer since;       // started in main
-    static QByteArray typeName(int type) {
-        const char* key = QMetaEnum::fromType<QEvent::Type>().valueToKey(type);
-        return key ? QByteArray(key) : "type " + QByteArray::number(type);
-    }
-    bool notify(QObject* receiver, QEvent* event) override {
-        if (slowMs <= 0 && !traceResizes)
-            return QApplication::notify(receiver, event);
-        // Named before the event: its handling may delete the receiver.
-        const int type = event->type();
-        const QObject* parent = receiver->parent();
-        const QByteArray name = QByteArray(receiver->metaObject()->className()) + " '" +
-                                receiver->objectName().toUtf8() + "' (parent " +
-                                (parent ? parent->metaObject()->className() : "-") + ")";
-        const qint64 start = since.elapsed();
-        if (traceResizes && type == QEvent::Resize) {
-            const auto* r = static_cast<const QResizeEvent*>(event);
-            std::fprintf(stderr, "resize at %.3f s: %s %dx%d -> %dx%d\n", start / 1000.0,
-                         name.constData(), r->oldSize().width(), r->oldSize().height(),
-                         r->size().width(), r->size().height());
-        }
-        const bool handled = QApplication::notify(receiver, event);
-        if (const qint64 ms = since.elapsed() - start; slowMs > 0 && ms >= slowMs)
-            std::fprintf(stderr, "slow event at %.3f s (monotonic %.3f): %lld ms, %s, %s\n",
-                         start / 1000.0, (since.msecsSinceReference() + start) / 1000.0,
-                         static_cast<long long>(ms), typeName(type).constData(), name.constData());
-        return handled;
-    }
-};
-
-bool waitUntil(const std::function<bool()>& done, int timeoutMs) {
-    QElapsedTimer clock;
-    clock.start();
-    QTimer wake; // `done` is asked again at least this often
-    wake.start(20);
-    while (!done()) {
-        if (clock.elapsed() > timeoutMs)
-            return false;
-        // Sleeps until an event comes, as the editor's own loop does: spinning took one of the
-        // two cores from the bakes and llvmpipe.
-        QCoreApplication::processEvents(QEventLoop::AllEvents | QEventLoop::WaitForMoreEvents);
-    }
-    return true;
-}
 
 // Draws a frame in every viewport shown, so the maps are on the GPU when memory is read.
 bool drawEveryView(MainWindow& window, int views) {

@@ -3,8 +3,11 @@
 
 #include "preview/ErrorStats.h"
 
+#include "preview/VisibleRegion.h"
+
 #include <QTest>
 #include <algorithm>
+#include <functional>
 #include <random>
 
 using namespace px;
@@ -60,6 +63,100 @@ private slots:
         QVERIFY(e.otherSurface > 0);
         QVERIFY(e.meanError > e.p99Error); // what the readout used to show alone
         QCOMPARE(e.meanFetches, 12.0);
+    }
+
+    // The view's surface: pixel (x, y) shows uv (u0 + x du, v0 + y dv) (tile + uv), every pixel
+    // on the surface but those `hidden` says not.
+    static Image entryGrid(int w, int h, double u0, double du, double v0, double dv,
+                           const std::function<bool(int, int)>& hidden = {}) {
+        Image entry(w, h, 4);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                entry.at(x, y, 0) = static_cast<float>(u0 + x * du);
+                entry.at(x, y, 1) = static_cast<float>(v0 + y * dv);
+                entry.at(x, y, 2) = hidden && hidden(x, y) ? -1.0f : 0.0f;
+            }
+        return entry;
+    }
+
+    // Rays whose exact hit lies where the view shows no surface (hundreds of tiles under a
+    // silhouette, or on a part of the mesh out of view) are left out and counted; the figures
+    // are over the rest, whatever the seed.
+    void exactHitsOffTheVisibleSurfaceAreLeftOut_data() {
+        QTest::addColumn<unsigned>("seed");
+        for (unsigned seed : {3u, 11u, 2024u, 77777u})
+            QTest::addRow("seed%u", seed) << seed;
+    }
+    void exactHitsOffTheVisibleSurfaceAreLeftOut() {
+        QFETCH(unsigned, seed);
+        std::mt19937 rng(seed);
+        const int w = 48, h = 32, mapSide = 64;
+        // Half a tube's tile in view: u in [0.1, 0.57], v in [1.2, 1.51] (tile + uv).
+        const Image entry = entryGrid(w, h, 0.1, 0.01, 1.2, 0.01);
+        const VisibleRegion region(entry, mapSide, mapSide);
+        Image exact(w, h, 4), hits(w, h, 4);
+        std::uniform_real_distribution<double> small(-3.0, 3.0);   // texels from the entry
+        std::uniform_real_distribution<double> away(100.0, 400.0); // tiles
+        std::uniform_int_distribution<int> kind(0, 19);
+        int off = 0;
+        double worstOn = 0.0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                double u = entry.at(x, y, 0) + small(rng) / mapSide;
+                double v = entry.at(x, y, 1) + small(rng) / mapSide;
+                const int k = kind(rng);
+                if (k == 0) { // a silhouette ray: hundreds of tiles away
+                    u += away(rng);
+                    ++off;
+                } else if (k == 1) { // the hidden half of the tube, in the same tile
+                    u = 0.8 + 0.1 * std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+                    ++off;
+                }
+                exact.at(x, y, 0) = static_cast<float>(u);
+                exact.at(x, y, 1) = static_cast<float>(v);
+                exact.at(x, y, 2) = 0.4f;
+                const double e = std::uniform_real_distribution<double>(0.0, 0.5)(rng);
+                hits.at(x, y, 0) = static_cast<float>(u + e / mapSide);
+                hits.at(x, y, 1) = static_cast<float>(v);
+                hits.at(x, y, 2) = 0.4f;
+                hits.at(x, y, 3) = 8.0f;
+                if (k > 1)
+                    worstOn = std::max(worstOn, e);
+            }
+        const SurfaceErrors all = compareSurfaces(hits, exact, mapSide, mapSide);
+        QCOMPARE(all.offRegionPixels, 0); // without a region every ray counts
+        const SurfaceErrors e = compareSurfaces(hits, exact, mapSide, mapSide, &region);
+        QCOMPARE(e.offRegionPixels, off);
+        QCOMPARE(e.pixels, w * h - off);
+        QVERIFY(e.maxError <= worstOn + 1e-3); // float uv: a few thousandths of a texel
+        QVERIFY(e.maxError < 0.51);
+    }
+
+    // Seen at a grazing angle, neighbouring pixels lie far apart in uv: the surface between them
+    // is shown too. A seam (a jump of half a tile or more) joins nothing.
+    void theSurfaceBetweenNeighbouringPixelsIsVisible() {
+        const int mapSide = 256;
+        // Rows 0.3 tiles apart (77 texels), columns 0.01 apart.
+        const VisibleRegion grazing(entryGrid(20, 6, 0.0, 0.01, 0.0, 0.3), mapSide, mapSide);
+        QVERIFY(grazing.contains(0.05, 0.45));
+        QVERIFY(grazing.contains(0.05, 1.49));
+        QVERIFY(!grazing.contains(0.05, 1.6)); // past the last row, beyond one cell
+        QVERIFY(!grazing.contains(0.6, 0.45)); // beside the columns
+        // Two parts of a mesh side by side on screen, a tile apart in uv: not the uv between.
+        const VisibleRegion seam(entryGrid(20, 6, 0.0, 0.01, 0.0, 0.01, {}), mapSide, mapSide);
+        QVERIFY(seam.contains(0.1, 0.02));
+        Image twoParts = entryGrid(20, 6, 0.0, 0.01, 0.0, 0.01);
+        for (int y = 0; y < 6; ++y)
+            for (int x = 10; x < 20; ++x)
+                twoParts.at(x, y, 0) += 1.0f;
+        const VisibleRegion parts(twoParts, mapSide, mapSide);
+        QVERIFY(parts.contains(0.05, 0.02));
+        QVERIFY(parts.contains(1.15, 0.02));
+        QVERIFY(!parts.contains(0.6, 0.02));
+        // Nothing in view: nothing is.
+        const VisibleRegion none(entryGrid(4, 4, 0, 0.1, 0, 0.1, [](int, int) { return true; }),
+                                 mapSide, mapSide);
+        QVERIFY(none.empty() && !none.contains(0.0, 0.0));
     }
 };
 

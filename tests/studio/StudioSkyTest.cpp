@@ -2,6 +2,7 @@
 // follows it when the light moves.
 
 #include "StudioTestSupport.h"
+#include "parallax/image/ImageFile.h"
 
 #include <QLineF>
 
@@ -91,6 +92,61 @@ private slots:
         // Ten degrees apart: the sun moved across the view, not within the tolerance.
         QVERIFY(QLineF(brightestSky(first, camera), brightestSky(second, camera)).length() >
                 0.1 * first.width());
+    }
+
+    // A saved material opens under the light it was last shown with (the editor's settings, as
+    // its mesh): the sky, an HDR file, exposure and the background; a file that is gone is named
+    // and the light drawn before stays.
+    void environmentIsRememberedWithTheMaterial() {
+        const QString material = m_dir.filePath("lit.json");
+        const QString hdr = m_dir.filePath("studio.exr");
+        Image map(64, 32, 3);
+        for (int y = 0; y < map.height; ++y)
+            for (int x = 0; x < map.width; ++x)
+                for (int c = 0; c < 3; ++c)
+                    map.at(x, y, c) = y < 16 ? 2.0f : 0.25f;
+        QVERIFY(writeImage(hdr.toStdString(), map, {PixelFormat::Half, false}));
+        {
+            auto w = makeWindow(1, 16);
+            QVERIFY(w);
+            QVERIFY(w->saveTo(material));
+            QVERIFY(w->setEnvironment("sky"));
+            SharedView view = w->viewports()->activeView();
+            view.exposure = 1.5f;
+            w->viewports()->editView(view);
+        }
+        {
+            auto w = makeWindow(1, 16); // another session: the settings are what it has
+            QVERIFY(w);
+            QVERIFY(!w->viewports()->activeView().environment);
+            QVERIFY(w->openFile(material));
+            const SharedView& view = w->viewports()->activeView();
+            QVERIFY(view.environment);
+            QCOMPARE(view.environmentName, QString("sky"));
+            QCOMPARE(view.exposure, 1.5f);
+            QVERIFY2(w->lastProblem().isEmpty(), qPrintable(w->lastProblem()));
+            // Now an HDR file, without the environment behind.
+            QVERIFY(w->setEnvironment(hdr));
+            SharedView edited = w->viewports()->activeView();
+            edited.showEnvironment = false;
+            w->viewports()->editView(edited);
+        }
+        {
+            auto w = makeWindow(1, 16);
+            QVERIFY(w);
+            QVERIFY(w->openFile(material));
+            const SharedView& view = w->viewports()->activeView();
+            QVERIFY(view.environment);
+            QCOMPARE(view.environmentName, QFileInfo(hdr).absoluteFilePath());
+            QCOMPARE(view.showEnvironment, false);
+            QCOMPARE(view.exposure, 1.5f);
+        }
+        QVERIFY(QFile::remove(hdr));
+        auto w = makeWindow(1, 16);
+        QVERIFY(w);
+        QVERIFY(w->openFile(material)); // the material opens; its light cannot be made
+        QVERIFY(!w->viewports()->activeView().environment);
+        QVERIFY2(w->lastProblem().contains("studio.exr"), qPrintable(w->lastProblem()));
     }
 };
 

@@ -6,8 +6,9 @@
 
 namespace px {
 
-Result<std::unique_ptr<Renderer>> Renderer::create() {
+Result<std::unique_ptr<Renderer>> Renderer::create(std::shared_ptr<ShaderCache> shaders) {
     std::unique_ptr<Renderer> r(new Renderer);
+    r->m_shaders = shaders ? std::move(shaders) : std::make_shared<ShaderCache>();
     r->m_info = currentGlInfo();
     if (Status s = requireGl43(r->m_info); !s)
         return s.error();
@@ -59,7 +60,7 @@ Status Renderer::draw(GpuMaterial& gpu, const Material& m, const OrbitCamera& ca
     const VariantKey key = variantFor(gpu, m, o);
     if (Status s = gpu.prepare(key.technique); !s)
         return s;
-    Result<const ShaderProgram*> program = m_shaders.program(key);
+    Result<const ShaderProgram*> program = m_shaders->program(key);
     if (!program)
         return program.error();
     const ShaderProgram& p = **program;

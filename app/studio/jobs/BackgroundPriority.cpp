@@ -3,6 +3,7 @@
 #include <future>
 #include <tbb/task_arena.h>
 #include <tbb/task_scheduler_observer.h>
+#include <thread>
 
 #ifdef __linux__
 #include <cerrno>
@@ -14,20 +15,57 @@ namespace px::studio {
 
 namespace {
 
-// Lowers each TBB worker's priority as it enters the arena.
+bool setThisThreadsNice(int nice) {
+#ifdef __linux__
+    // Linux applies a thread id's nice value to that thread alone.
+    return setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), nice) == 0;
+#else
+    (void)nice;
+    return false;
+#endif
+}
+
+// Lowers each worker as it enters the arena, and raises it again as it leaves (where allowed).
 class WorkerPriority : public tbb::task_scheduler_observer {
 public:
-    WorkerPriority() { observe(true); }
+    explicit WorkerPriority(tbb::task_arena& arena) : tbb::task_scheduler_observer(arena) {
+        observe(true);
+    }
     WorkerPriority(const WorkerPriority&) = delete;
     WorkerPriority& operator=(const WorkerPriority&) = delete;
     ~WorkerPriority() override { observe(false); }
     void on_scheduler_entry(bool isWorker) override {
-        if (isWorker)
-            lowerThisThreadsPriority();
+        if (!isWorker)
+            return;
+        t_before = thisThreadsNice();
+        if (t_before < kBackgroundNice)
+            setThisThreadsNice(kBackgroundNice);
     }
+    void on_scheduler_exit(bool isWorker) override {
+        if (isWorker && t_before < kBackgroundNice)
+            setThisThreadsNice(t_before);
+    }
+
+private:
+    static thread_local int t_before;
 };
 
+thread_local int WorkerPriority::t_before = 0;
+
 } // namespace
+
+struct BackgroundArena::Impl {
+    tbb::task_arena arena;
+    WorkerPriority observer{arena};
+};
+
+BackgroundArena::BackgroundArena() : m_impl(std::make_unique<Impl>()) {}
+
+BackgroundArena::~BackgroundArena() = default;
+
+void BackgroundArena::execute(const std::function<void()>& work) {
+    m_impl->arena.execute(work);
+}
 
 int thisThreadsNice() {
 #ifdef __linux__
@@ -47,16 +85,20 @@ int tbbWorkerNice() {
     return nice.get_future().get();
 }
 
-void lowerThisThreadsPriority() {
-#ifdef __linux__
-    // Linux applies a thread id's nice value to that thread alone.
-    if (thisThreadsNice() < kBackgroundNice)
-        setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kBackgroundNice);
-#endif
+bool canRaisePriority() {
+    // Tried on a thread of its own, which ends with it.
+    bool raised = false;
+    std::thread probe([&raised] {
+        const int own = thisThreadsNice();
+        raised = setThisThreadsNice(own + 1) && setThisThreadsNice(own);
+    });
+    probe.join();
+    return raised;
 }
 
-void lowerTbbWorkersPriority() {
-    static WorkerPriority observer;
+void lowerThisThreadsPriority() {
+    if (thisThreadsNice() < kBackgroundNice)
+        setThisThreadsNice(kBackgroundNice);
 }
 
 } // namespace px::studio

@@ -2,22 +2,48 @@
 // Background work (bakes, and the TBB workers they fan out to) runs at a lower CPU priority than
 // the GUI thread and the GL driver's threads: on a 2-core machine a bake on every core otherwise
 // starves the event loop (llvmpipe, 8192² cone bake: a progress update took 60 ms, a frame 300).
+// Only threads doing that work are lowered: a thread cannot raise its priority again without
+// privileges, and the threads that run loads and exports (Qt's global pool, TBB's default arena)
+// must not inherit a bake's priority.
+
+#include <functional>
+#include <memory>
 
 namespace px::studio {
 
 // The nice value background threads run at (Linux; elsewhere nothing changes).
 inline constexpr int kBackgroundNice = 10;
 
-// Lowers the calling thread's priority alone. Without privileges it cannot be raised again: call
-// it only on threads that do background work from then on (pool threads, bake jobs).
+// Lowers the calling thread's priority alone, for good: call it only on a thread that does
+// background work from then on (a pool of its own: BakeRunner's, MapUpload's).
 void lowerThisThreadsPriority();
 
-// From now on TBB's worker threads lower their own priority as they join the default arena; the
-// thread that starts a parallel loop keeps its own (the GUI thread stays as it is).
-void lowerTbbWorkersPriority();
+// A TBB arena whose worker threads run at kBackgroundNice while they work in it, and at their own
+// priority again once they leave it where the system lets a thread raise its priority (root,
+// CAP_SYS_NICE, or an RLIMIT_NICE allowing it; elsewhere a worker that served it stays lower).
+// The thread that calls execute() keeps its own priority. Other TBB work (an environment's
+// prefilter, the bench, exports) runs in TBB's default arena, untouched.
+class BackgroundArena {
+public:
+    BackgroundArena();
+    ~BackgroundArena();
+    BackgroundArena(const BackgroundArena&) = delete;
+    BackgroundArena& operator=(const BackgroundArena&) = delete;
 
-// The calling thread's nice value (0 where there is none), and a TBB worker's (tests).
+    // Runs `work` in the arena (its parallel loops run on the arena's workers); blocks.
+    void execute(const std::function<void()>& work);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+// The calling thread's nice value (0 where there is none), and a TBB worker's in the default arena
+// (tests).
 int thisThreadsNice();
 int tbbWorkerNice();
+// Whether this process may raise a thread's priority again (tests: a worker then leaves the
+// background arena at its own priority).
+bool canRaisePriority();
 
 } // namespace px::studio

@@ -27,9 +27,10 @@ QString bakeTitle(BakeKind kind) {
 namespace {
 
 BakeOutcome runBake(const BakeRequest& request, const BakeControl& control) {
-    lowerThisThreadsPriority(); // a pool thread: background work only
+    lowerThisThreadsPriority(); // the runner's own thread: bakes only
     BakeOutcome outcome;
     outcome.request = request;
+    outcome.threadNice = thisThreadsNice();
     const auto start = std::chrono::steady_clock::now();
     const HeightField& field = request.source->height;
     if (request.kind == BakeKind::Normal) {
@@ -61,8 +62,9 @@ BakeOutcome runBake(const BakeRequest& request, const BakeControl& control) {
 
 } // namespace
 
-BakeRunner::BakeRunner(QObject* parent) : QObject(parent) {
-    lowerTbbWorkersPriority(); // the bakers' parallel loops
+BakeRunner::BakeRunner(QObject* parent)
+    : QObject(parent), m_arena(std::make_unique<BackgroundArena>()) {
+    m_pool.setMaxThreadCount(1); // one bake at a time, in the order asked
     connect(&m_watcher, &QFutureWatcher<BakeOutcome>::finished, this, &BakeRunner::done);
 }
 
@@ -81,6 +83,7 @@ std::optional<BakeKind> BakeRunner::current() const {
 
 void BakeRunner::start(const BakeRequest& request) {
     m_queue.push_back(request);
+    m_queue.back().asked = std::chrono::steady_clock::now();
     if (!m_running)
         next();
 }
@@ -124,8 +127,12 @@ void BakeRunner::next() {
     const BakeRequest request = *m_runningRequest;
     // The cancel flag lives as long as the job: the job holds its own reference.
     std::shared_ptr<std::atomic<bool>> flag = m_cancel;
-    m_watcher.setFuture(
-        QtConcurrent::run([request, control, flag] { return runBake(request, control); }));
+    BackgroundArena* arena = m_arena.get(); // outlives the job: ~BakeRunner waits for it
+    m_watcher.setFuture(QtConcurrent::run(&m_pool, [request, control, flag, arena] {
+        BakeOutcome outcome;
+        arena->execute([&] { outcome = runBake(request, control); }); // the bakers' loops there
+        return outcome;
+    }));
 }
 
 void BakeRunner::done() {

@@ -11,17 +11,23 @@
 #include <QFutureWatcher>
 #include <QObject>
 #include <QString>
+#include <QThreadPool>
 #include <atomic>
+#include <chrono>
 #include <deque>
 #include <memory>
 
 namespace px::studio {
+
+class BackgroundArena;
 
 enum class BakeKind { Normal, Cone, RelaxedCone };
 QString bakeTitle(BakeKind kind); // "normal map", "cone map", "relaxed cone map"
 
 struct BakeRequest {
     BakeKind kind = BakeKind::Cone;
+    // When it was asked for (BakeRunner::start): the wait a user sees runs from here.
+    std::chrono::steady_clock::time_point asked;
     std::shared_ptr<const MaterialAssets> source; // its height map is baked
     WrapMode wrap = WrapMode::Repeat;
     NormalBakeOptions normal; // for BakeKind::Normal
@@ -33,7 +39,8 @@ struct BakeOutcome {
     ConeMap cone;  // BakeKind::Cone and RelaxedCone
     QString error; // empty on success
     bool cancelled = false;
-    double seconds = 0.0;
+    double seconds = 0.0; // the bake itself, on its thread
+    int threadNice = 0;   // the bake's thread's nice value while it baked (BackgroundPriority.h)
 };
 
 class BakeRunner : public QObject {
@@ -64,6 +71,10 @@ private:
     std::optional<BakeRequest> m_runningRequest;
     bool m_running = false;
     std::shared_ptr<std::atomic<bool>> m_cancel;
+    // A thread and a TBB arena of the bakes' own, both below the GUI: the threads that run loads
+    // and exports (Qt's global pool, TBB's default arena) keep their priority.
+    QThreadPool m_pool;
+    std::unique_ptr<BackgroundArena> m_arena;
     QFutureWatcher<BakeOutcome> m_watcher;
 };
 

@@ -21,6 +21,7 @@ namespace {
 
 std::atomic<int> g_completed{0};
 std::atomic<int> g_discarded{0};
+std::atomic<int> g_skipped{0};
 
 // Tests hold the workers at their start, to destroy an upload while it runs.
 std::mutex g_holdMutex;
@@ -65,6 +66,10 @@ struct MapUpload::Handover {
     std::mutex mutex;
     bool abandoned = false;
     bool delivered = false;
+    bool isAbandoned() {
+        std::lock_guard lock(mutex);
+        return abandoned;
+    }
 };
 
 MapUpload::MapUpload(std::shared_ptr<const MaterialAssets> assets, WrapMode wrap,
@@ -79,10 +84,16 @@ MapUpload::MapUpload(std::shared_ptr<const MaterialAssets> assets, WrapMode wrap
                                                  techniques = m_techniques,
                                                  handover = m_handover]() mutable {
         waitWhileHeld();
+        auto made = std::make_shared<Made>();
+        // Nobody wants it any more (the view went, or its maps changed while it waited behind
+        // another upload on the one thread): the next upload is not kept waiting for it.
+        if (handover->isAbandoned()) {
+            ++g_skipped;
+            return made;
+        }
         // Below the GUI thread, as bakes are; the context's driver threads (llvmpipe's), made
         // next on this thread, inherit it.
         lowerThisThreadsPriority();
-        auto made = std::make_shared<Made>();
         Result<std::shared_ptr<QOpenGLContext>> context = sharedViewportContext(surface);
         if (!context) {
             made->error = context.error().message;
@@ -92,7 +103,7 @@ MapUpload::MapUpload(std::shared_ptr<const MaterialAssets> assets, WrapMode wrap
             GpuMaterial::create(*assets, wrap, snapshot.get());
         snapshot.reset(); // textures only it held go with this context current
         for (Technique t : techniques) {
-            if (!gpu)
+            if (!gpu || handover->isAbandoned()) // between the maps, as soon as it is known
                 break;
             if (Status prepared = (*gpu)->prepare(t); !prepared)
                 gpu = prepared.error();
@@ -143,6 +154,10 @@ int MapUpload::completed() {
 
 int MapUpload::discarded() {
     return g_discarded.load();
+}
+
+int MapUpload::skipped() {
+    return g_skipped.load();
 }
 
 void MapUpload::holdWorkers(bool held) {

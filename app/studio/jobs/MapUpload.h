@@ -37,10 +37,12 @@ public:
     // Once finished: the material, or why there is none (no context could share the views').
     Result<std::shared_ptr<GpuMaterial>> result() const;
 
-    // Uploads finished on a worker so far, and those whose upload was destroyed first (their
-    // textures released on the worker) (tests).
+    // Uploads finished on a worker so far, those whose upload was destroyed first (their
+    // textures released on the worker), and those destroyed before the worker began them (it
+    // then skips them: the one upload thread is not kept from the next upload) (tests).
     static int completed();
     static int discarded();
+    static int skipped();
     // Tests: workers wait at their start while held.
     static void holdWorkers(bool held);
 

@@ -130,6 +130,9 @@ void ComparePanel::run() {
     m_cancel->setEnabled(true);
     m_progress->setRange(0, 0); // busy until the first progress report
     m_status->setText(tr("Measuring %1 settings at 4 view angles…").arg(config.settings.size()));
+    m_chart->setPlaceholderText(
+        tr("Measuring every technique's error and cost on this material: the plot shows here "
+           "when it is done (progress above, Cancel stops it)."));
     m_runner->start(std::move(config));
 }
 
@@ -144,8 +147,11 @@ void ComparePanel::onFinished(const BenchOutcome& outcome) {
     m_progress->setValue(outcome.report ? 1 : 0);
     if (outcome.cancelled) {
         m_status->setText(tr("Cancelled."));
+        m_chart->setPlaceholderText(tr("The comparison was cancelled. Run it again (Ctrl+R) to "
+                                       "measure every technique's error against its cost."));
     } else if (!outcome.error.isEmpty()) {
         m_status->setText(outcome.error);
+        m_chart->setPlaceholderText(tr("The comparison failed (the line above says why)."));
     } else if (outcome.report) {
         m_result = makeWorkPrecisionChart(*outcome.report);
         const QSignalBlocker a(m_polar), b(m_axis);

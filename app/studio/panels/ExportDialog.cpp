@@ -1,9 +1,10 @@
 #include "panels/ExportDialog.h"
 
+#include "widgets/FileDialogs.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -73,7 +74,7 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
         // Pick where the export goes; the export is a new folder in there, named after the file.
         const QFileInfo current(m_folder->text());
         const QString parent =
-            QFileDialog::getExistingDirectory(this, tr("Export Into"), current.absolutePath());
+            askFolder(this, FileKind::ExportFolder, tr("Export Into"), current.absolutePath());
         if (!parent.isEmpty())
             m_folder->setText(parent + QLatin1Char('/') + current.fileName());
     });

@@ -97,6 +97,13 @@ QString MapsPanel::bakeStatus() const {
     return m_bakeLabel->text();
 }
 
+void MapsPanel::showBakeShown(BakeKind kind, double bakeSeconds, double shownSeconds) {
+    m_bakeLabel->setText(tr("Baked the %1 in %2 s, shown %3 s after Bake.")
+                             .arg(bakeTitle(kind))
+                             .arg(bakeSeconds, 0, 'f', 2)
+                             .arg(shownSeconds, 0, 'f', 2));
+}
+
 NormalFilter MapsPanel::normalFilter() const {
     return parseNormalFilter(m_filter->currentText().toStdString()).value_or(NormalFilter::Sobel);
 }

@@ -98,7 +98,8 @@ TechniquePanel::TechniquePanel(MaterialDocument* document, QWidget* parent)
     // the view range, measured on this height map (parallax/eval/AutoTechnique.h), as render and
     // export resolve a material file's "auto".
     m_autoBox = new QGroupBox(tr("Auto: the cheapest setting within a budget"), this);
-    auto* autoForm = new QFormLayout(m_autoBox);
+    auto* autoLayout = new QVBoxLayout(m_autoBox);
+    auto* autoForm = new QFormLayout;
     m_autoBudget = new QDoubleSpinBox(m_autoBox);
     m_autoBudget->setRange(0.01, 100.0);
     m_autoBudget->setDecimals(2);
@@ -118,17 +119,22 @@ TechniquePanel::TechniquePanel(MaterialDocument* document, QWidget* parent)
                               "one meeting the budget the material's (saved as \"auto\")."));
     m_autoStatus = new QLabel(m_autoBox);
     m_autoStatus->setWordWrap(true);
+    m_autoStatus->setTextInteractionFlags(Qt::TextSelectableByMouse);
     autoForm->addRow(tr("Budget"), m_autoBudget);
     autoForm->addRow(tr("Up to"), m_autoPolar);
     autoForm->addRow(m_autoPick);
-    autoForm->addRow(m_autoStatus);
+    autoLayout->addLayout(autoForm);
+    // The result and its chart below the form, not in a row of it: a form row spanning both
+    // columns kept the wrapped sentences to one line's height (the rest was cut off).
+    autoLayout->addWidget(m_autoStatus);
     m_autoChart = new WorkPrecisionView(m_autoBox);
     m_autoChart->setMinimumHeight(180);
+    m_autoChart->setMinimumWidth(160); // a small chart, not the Compare panel's: never widens it
     m_autoChart->setToolTip(tr("Every setting Pick measured, p99 error against mean fetches at the "
                                "steepest view; the ring is the choice, the dashed line the "
                                "Pareto front."));
     m_autoChart->hide();
-    autoForm->addRow(m_autoChart);
+    autoLayout->addWidget(m_autoChart);
     layout->addWidget(m_autoBox);
     connect(m_autoPick, &QPushButton::clicked, this, &TechniquePanel::pickAuto);
 
@@ -214,6 +220,8 @@ void TechniquePanel::pickAuto() {
         next.material.autoQuality = quality; // still auto: export measures its own maps again
     });
     m_autoNote = QString::fromStdString(resolved->note);
+    if (!m_autoNote.isEmpty() && !m_autoNote.endsWith(QLatin1Char('.')))
+        m_autoNote += QLatin1Char('.'); // a sentence may follow
     if (resolved->recommendation) {
         std::optional<PointRef> chosenPoint;
         m_autoChart->setPanel(makeRecommendationPanel(*resolved->recommendation, &chosenPoint));

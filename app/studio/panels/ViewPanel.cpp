@@ -188,7 +188,7 @@ void ViewPanel::chooseMesh(int index) {
     view.mesh = static_cast<MeshKind>(m_mesh->itemData(index).toInt());
     view.meshData.reset();
     view.meshFile.clear();
-    m_grid->editView(view);
+    m_grid->showMesh(view);
 }
 
 } // namespace px::studio

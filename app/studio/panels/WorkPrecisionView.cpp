@@ -13,6 +13,13 @@ WorkPrecisionView::WorkPrecisionView(QWidget* parent) : QWidget(parent) {
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     setStatusTip(tr("Lower is more accurate, left is cheaper: the dashed line is the Pareto front. "
                     "Click a point to use that technique and setting in the active viewport."));
+    m_placeholder = tr("Run the comparison (Ctrl+R) to measure every technique's error against "
+                       "its cost on this material.");
+}
+
+void WorkPrecisionView::setPlaceholderText(const QString& text) {
+    m_placeholder = text;
+    update();
 }
 
 QColor WorkPrecisionView::techniqueColour(Technique technique) {
@@ -118,9 +125,8 @@ void WorkPrecisionView::paintEvent(QPaintEvent*) {
     const QPalette& pal = palette();
     if (!m_panel || m_panel->series.empty()) {
         p.setPen(pal.color(QPalette::PlaceholderText));
-        p.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap,
-                   tr("Run the comparison (Ctrl+R) to measure every technique's error against "
-                      "its cost on this material."));
+        p.drawText(rect().adjusted(8, 8, -8, -8), Qt::AlignCenter | Qt::TextWordWrap,
+                   m_placeholder);
         return;
     }
     const QRectF r = plotRect();

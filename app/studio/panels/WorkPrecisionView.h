@@ -17,6 +17,9 @@ public:
 
     void setPanel(const WorkPrecisionPanel& panel);
     void clear();
+    // What the view says while it has no panel (what to do, or that a run is under way).
+    void setPlaceholderText(const QString& text);
+    QString placeholderText() const { return m_placeholder; }
     // A point drawn ringed (the editor's Auto choice); reset by setPanel and clear.
     void setHighlight(std::optional<PointRef> ref);
     std::optional<PointRef> highlight() const { return m_highlight; }
@@ -45,6 +48,7 @@ private:
     std::optional<PointRef> pointAt(QPointF position) const;
 
     std::optional<WorkPrecisionPanel> m_panel;
+    QString m_placeholder;
     std::optional<PointRef> m_hover;
     std::optional<PointRef> m_highlight;
 };

@@ -67,6 +67,18 @@ void FramePacer::endTurn() {
     g_turnEndedMs = nowMs();
 }
 
+namespace {
+std::optional<double> g_inputMs;
+} // namespace
+
+void FramePacer::noteInput() {
+    g_inputMs = nowMs();
+}
+
+bool FramePacer::inputRecently() {
+    return g_inputMs && nowMs() - *g_inputMs < kInputQuietMs;
+}
+
 void FramePacer::setClock(std::function<double()> nowMs) {
     g_clock = std::move(nowMs);
 }

@@ -52,6 +52,14 @@ public:
     static double budgetLeftInTurn(double breathMs);
     static void spentInTurn(double ms);
     static void endTurn();
+    // The user's input (a press, a key, the wheel) and whether some came within the last
+    // kInputQuietMs. While it does, a view puts off what would hold the event loop for long: a
+    // shader variant's first draw in its context (llvmpipe compiles it then, 0.3-0.9 s on the
+    // GUI thread), so the window answers the click first and the variant is drawn once the user
+    // pauses.
+    static constexpr double kInputQuietMs = 300.0;
+    static void noteInput();
+    static bool inputRecently();
 
     // The clock steps and bands are timed with, in ms (tests: a clock the draws advance). Empty:
     // the steady clock.

@@ -5,6 +5,7 @@
 #include "parallax/render/GpuEnvironment.h" // parallax-render
 #include "parallax/render/Renderer.h"       // parallax-render
 #include "preview/ErrorStats.h"
+#include "preview/VisibleRegion.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
@@ -13,6 +14,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <set>
 #include <vector>
 
 namespace px::studio {
@@ -79,20 +82,39 @@ std::vector<std::weak_ptr<MapUpload>>& runningUploads() {
     return uploads;
 }
 
+// The compiled variants of the views whose contexts share objects (AA_ShareOpenGLContexts: every
+// view's), one cache per share group: a variant compiles once however many views draw it. A new
+// view (Ctrl+4 opens three) used to compile every variant it drew again, on the GUI thread.
+std::shared_ptr<ShaderCache> groupShaderCache() {
+    static std::map<const QOpenGLContextGroup*, std::weak_ptr<ShaderCache>> caches;
+    std::erase_if(caches, [](const auto& entry) { return entry.second.expired(); });
+    const QOpenGLContextGroup* group = QOpenGLContext::currentContext()->shareGroup();
+    std::shared_ptr<ShaderCache> cache = caches[group].lock();
+    if (!cache) {
+        cache = std::make_shared<ShaderCache>();
+        caches[group] = cache;
+    }
+    return cache;
+}
+
 // Uploads of more texels than this go up on a worker (jobs/MapUpload.h): 4096², about 0.3 s on
 // the GUI thread with llvmpipe.
 std::size_t g_backgroundTexels = std::size_t(4096) * 4096;
 
-// A measurement under way: the view's pass, then exact's, drawn a few boxes at a time into the
-// surface target (u, v, t, fetches; -1 outside the boxes).
+// A measurement under way, drawn a few boxes at a time into the surface target (u, v, t,
+// fetches; -1 outside the boxes): each pixel's own uv over the whole view (no tracing: what the
+// view shows, VisibleRegion.h), then the view's hits and exact's in the boxes.
 struct Measurement {
+    enum class Pass { Entry, View, Exact };
     PreviewScene scene;
     double frameMs = 0.0;
-    std::vector<QRect> boxes;
-    std::size_t next = 0;   // the next box to draw
-    bool reference = false; // the second pass: exact
-    Image hits;             // the first pass's output
-    double boxMs = 0.0;     // the dearest box drawn so far (a pass's last box reads it back)
+    std::vector<QRect> boxes; // the view's and exact's passes
+    std::vector<QRect> whole; // the entry pass
+    std::size_t next = 0;     // the next box of the pass to draw
+    Pass pass = Pass::Entry;
+    Image entry, hits;  // the first two passes' output
+    double boxMs = 0.0; // the dearest box drawn so far (a pass's last box reads it back)
+    const std::vector<QRect>& passBoxes() const { return pass == Pass::Entry ? whole : boxes; }
 };
 
 } // namespace
@@ -106,6 +128,21 @@ struct PreviewRenderer::Impl {
     std::optional<RenderTarget> surfaceTarget; // float (u, v, t, fetches), the view's size
     std::shared_ptr<const PrefilteredEnvironment> uploadedEnvironment; // what gpuEnvironment holds
     std::unique_ptr<GpuEnvironment> gpuEnvironment;
+    // The variants this view's context has drawn: a new one's first draw is put off while the
+    // user acts (FramePacer::inputRecently), as llvmpipe compiles it for this context then.
+    std::set<std::uint32_t> drawnVariants;
+    bool shownOnce = false;    // a whole frame has been shown
+    bool measureWaits = false; // the measurement's next pass waits for the user to pause
+
+    bool waitForInputPause(const std::vector<VariantKey>& keys) const {
+        return FramePacer::inputRecently() && std::ranges::any_of(keys, [&](const VariantKey& k) {
+                   return !drawnVariants.contains(k.bits());
+               });
+    }
+    void drew(const std::vector<VariantKey>& keys) {
+        for (const VariantKey& k : keys)
+            drawnVariants.insert(k.bits());
+    }
 
     Status syncEnvironment(const PreviewScene& scene) {
         if (uploadedEnvironment == scene.view.environment)
@@ -224,6 +261,31 @@ struct PreviewRenderer::Impl {
 
     std::optional<Measurement> measurement;
 
+    // What the current pass of `m` draws with.
+    std::pair<Material, DrawOptions> passDraw(const Measurement& m) const {
+        DrawOptions o = options(m.scene);
+        o.output = ShaderOutput::Surface;
+        o.clear = true; // inside the box
+        Material material = m.scene.material;
+        if (m.pass == Measurement::Pass::Entry) {
+            material.technique = Technique::None; // the surface's own uv, t = 0
+            material.params = info(Technique::None).defaults;
+        } else if (m.pass == Measurement::Pass::Exact) {
+            // The view's hits come from the kernels it draws with (production: hardware
+            // filtering); the reference is the exact walk in the verify flavour, equal to the
+            // CPU's.
+            material.technique = Technique::Exact;
+            material.params = info(Technique::Exact).defaults;
+            o.kernels = KernelFlavour::Verify;
+        }
+        return {material, o};
+    }
+
+    VariantKey passVariant(const Measurement& m) const {
+        const auto [material, o] = passDraw(m);
+        return renderer->variantFor(*gpu, material, o);
+    }
+
     // Draws box `m.next` of the current pass (the target bound) and moves on.
     Status drawNextBox(Measurement& m) {
         QOpenGLFunctions* f = gl();
@@ -232,19 +294,9 @@ struct PreviewRenderer::Impl {
             f->glClearColor(-1.0f, -1.0f, -1.0f, -1.0f);
             f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         }
-        DrawOptions o = options(m.scene);
-        o.output = ShaderOutput::Surface;
-        o.clear = true; // inside the box
-        Material material = m.scene.material;
-        if (m.reference) {
-            // The view's hits come from the kernels it draws with (production: hardware
-            // filtering); the reference is the exact walk in the verify flavour, equal to the
-            // CPU's.
-            material.technique = Technique::Exact;
-            material.params = info(Technique::Exact).defaults;
-            o.kernels = KernelFlavour::Verify;
-        }
-        const QRect& box = m.boxes[m.next++];
+        const auto [material, o] = passDraw(m);
+        drew({renderer->variantFor(*gpu, material, o)});
+        const QRect& box = m.passBoxes()[m.next++];
         f->glEnable(GL_SCISSOR_TEST);
         // GL counts rows from the bottom.
         f->glScissor(box.x(), surfaceTarget->size().y - box.y() - box.height(), box.width(),
@@ -270,7 +322,7 @@ struct PreviewRenderer::Impl {
 PreviewRenderer::~PreviewRenderer() = default;
 
 Result<std::unique_ptr<PreviewRenderer>> PreviewRenderer::create() {
-    Result<std::unique_ptr<Renderer>> renderer = Renderer::create();
+    Result<std::unique_ptr<Renderer>> renderer = Renderer::create(groupShaderCache());
     if (!renderer)
         return renderer.error();
     std::unique_ptr<PreviewRenderer> preview(new PreviewRenderer);
@@ -363,8 +415,24 @@ Result<FramePacer::Step> PreviewRenderer::drawStep(const PreviewScene& scene, st
         m_pacer.forget(); // the maps drawn next cost what they cost
         return FramePacer::Step{true, 0.0, 0, false};
     }
+    Impl& d = *m_impl;
+    // A variant this context never drew waits while the user acts: its first draw would hold
+    // the event loop (FramePacer::inputRecently). Meanwhile the view shows what it had.
+    const DrawOptions options = d.options(scene);
+    std::vector<VariantKey> keys{d.renderer->variantFor(*d.gpu, scene.material, options)};
+    if (scene.overlays.wipe) {
+        Material b = scene.material;
+        b.technique = scene.overlays.wipeTechnique;
+        b.params = info(b.technique).defaults;
+        keys.push_back(d.renderer->variantFor(*d.gpu, b, options));
+    }
+    const bool waits = d.waitForInputPause(keys);
+    if (waits && !d.shownOnce) {
+        gl()->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        clearToBackground(size);
+        return FramePacer::Step{false, 0.0, 0, false};
+    }
     // What the cost per pixel depends on beyond the camera and the sliders.
-    const Impl& d = *m_impl;
     std::uint64_t key = kFnv1aOffset;
     auto mix = [&key](std::uint64_t v) { key = fnv1a(&v, sizeof v, key); };
     mix(static_cast<std::uint64_t>(scene.material.technique));
@@ -375,8 +443,11 @@ Result<FramePacer::Step> PreviewRenderer::drawStep(const PreviewScene& scene, st
     mix(scene.view.showEnvironment ? 1 : 0);
     mix((std::uint64_t(size.x) << 32) | std::uint64_t(size.y));
     Result<FramePacer::Step> step =
-        m_pacer.step(serial, key, size, fbo, budgetMs,
+        m_pacer.step(serial, key, size, fbo, waits ? 0.0 : budgetMs,
                      [&](glm::ivec2 at, QRect rows) { return drawScene(scene, at, rows); });
+    if (step && !waits && budgetMs > 0.0)
+        d.drew(keys);
+    d.shownOnce = d.shownOnce || (step && step->complete);
     // A step may draw nothing (the frame is whole): QPainter still needs the neutral state the
     // measurement's passes do not leave.
     gl()->glDisable(GL_DEPTH_TEST);
@@ -402,6 +473,7 @@ Status PreviewRenderer::beginMeasure(const PreviewScene& scene, QSize pixels, do
     d.measurement->frameMs = frameMs;
     d.measurement->boxes =
         scene.overlays.heatMap ? bands(size.x, size.y) : sampleBoxes(size.x, size.y);
+    d.measurement->whole = {QRect(0, 0, size.x, size.y)};
     return success();
 }
 
@@ -433,17 +505,26 @@ std::optional<Result<PreviewStats>> PreviewRenderer::measureStep(double sliceMs)
     QOpenGLFunctions* f = gl();
     d.surfaceTarget->bind();
     for (;;) {
+        // A pass on a variant this context never drew waits while the user acts, as frames do.
+        d.measureWaits = m.next == 0 && d.waitForInputPause({d.passVariant(m)});
+        if (d.measureWaits) {
+            f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            return std::nullopt;
+        }
         const auto boxStart = Clock::now();
         if (Status s = d.drawNextBox(m); !s) {
             f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
             return done(s.error());
         }
-        if (m.next == m.boxes.size()) {
+        if (m.next == m.passBoxes().size()) {
             Image image = d.surfaceTarget->read();
-            if (m.reference) {
+            if (m.pass == Measurement::Pass::Exact) {
                 f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
-                const SurfaceErrors errors = compareSurfaces(
-                    m.hits, image, scene.assets->height.width, scene.assets->height.height);
+                const int mapWidth = scene.assets->height.width,
+                          mapHeight = scene.assets->height.height;
+                const VisibleRegion region(m.entry, mapWidth, mapHeight);
+                const SurfaceErrors errors =
+                    compareSurfaces(m.hits, image, mapWidth, mapHeight, &region);
                 stats.fetchesPerPixel = errors.meanFetches;
                 stats.meanError = errors.meanError;
                 stats.p99Error = errors.p99Error;
@@ -451,12 +532,18 @@ std::optional<Result<PreviewStats>> PreviewRenderer::measureStep(double sliceMs)
                 stats.otherSurface = errors.otherSurface;
                 stats.pixels = errors.pixels;
                 stats.steepPixels = errors.steepPixels;
+                stats.offRegionPixels = errors.offRegionPixels;
                 stats.valid = true;
                 m_heatMap = scene.overlays.heatMap ? heatMapImage(errors) : QImage();
                 return done(stats);
             }
-            m.hits = std::move(image);
-            m.reference = true;
+            if (m.pass == Measurement::Pass::Entry) {
+                m.entry = std::move(image);
+                m.pass = Measurement::Pass::View;
+            } else {
+                m.hits = std::move(image);
+                m.pass = Measurement::Pass::Exact;
+            }
             m.next = 0;
             d.surfaceTarget->bind();
         }
@@ -482,6 +569,10 @@ bool PreviewRenderer::measuring() const {
     return m_impl->measurement.has_value();
 }
 
+bool PreviewRenderer::measureWaitsForInput() const {
+    return m_impl->measureWaits;
+}
+
 bool PreviewRenderer::uploading() const {
     return m_impl->uploading();
 }
@@ -501,6 +592,10 @@ void PreviewRenderer::setBackgroundUploadTexels(std::size_t texels) {
 
 const GpuMaterial* PreviewRenderer::gpuMaterial() const {
     return m_impl->gpu;
+}
+
+const ShaderCache& PreviewRenderer::shaders() const {
+    return m_impl->renderer->shaders();
 }
 
 std::optional<float> PreviewRenderer::uniformValue(const std::string& name) {

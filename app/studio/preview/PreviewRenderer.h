@@ -17,7 +17,8 @@
 
 namespace px {
 class GpuMaterial;
-}
+class ShaderCache;
+} // namespace px
 
 namespace px::studio {
 
@@ -36,21 +37,27 @@ public:
                                       unsigned fbo, double budgetMs);
     // Fetches per pixel and the error against `exact`, rendered at the view's own resolution (the
     // marching techniques' height level follows each pixel's footprint): over every pixel when
-    // the heat map is on (and makes it), else over a stratified sample of boxes of the view.
-    // Two extra passes, at 8192² 0.2-0.4 s on llvmpipe: drawn a slice at a time, so the event
-    // loop runs between. beginMeasure() starts over; each measureStep() draws at least one box,
-    // and no box it expects to take it past `sliceMs` (measureBoxMs: the dearest box so far), and
-    // returns the figures once both passes are done (not valid while the maps upload), else
-    // nothing yet.
+    // the heat map is on (and makes it), else over a stratified sample of boxes of the view; a
+    // pixel counts where exact's hit lies on the surface the view shows (VisibleRegion.h). Two
+    // extra passes, at 8192² 0.2-0.4 s on llvmpipe, and a cheap one of the surface's own uv over
+    // the whole view (no tracing): drawn a slice at a time, so the event loop runs between.
+    // beginMeasure() starts over; each measureStep() draws at least one box, and no box it
+    // expects to take it past `sliceMs` (measureBoxMs: the dearest box so far), and returns the
+    // figures once every pass is done (not valid while the maps upload), else nothing yet.
     Status beginMeasure(const PreviewScene& scene, QSize pixels, double frameMs);
     std::optional<Result<PreviewStats>> measureStep(double sliceMs);
     double measureBoxMs() const;
     void cancelMeasure();
     bool measuring() const;
+    // The last measureStep drew nothing: its next pass's variant waits for the user to pause
+    // (FramePacer::inputRecently), as a frame's does.
+    bool measureWaitsForInput() const;
     QImage heatMap() const { return m_heatMap; }
     std::optional<float> uniformValue(const std::string& name);
     // The maps this view last drew with (views showing the same maps share one), for tests.
     const GpuMaterial* gpuMaterial() const;
+    // The compiled variants this view draws with, shared by every view (tests).
+    const ShaderCache& shaders() const;
 
     // Big maps go up on a worker (jobs/MapUpload.h): meanwhile draw() shows the maps there are
     // (or the background, where they cannot stand in) and measure() measures nothing.

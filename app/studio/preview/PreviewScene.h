@@ -24,9 +24,10 @@ struct PreviewStats {
     double meanError = 0.0;       // texels, against the exact intersection, same pixels
     double p99Error = 0.0;
     double maxError = 0.0;
-    int otherSurface = 0; // pixels on another surface than the exact one (> 2 texels off)
-    int pixels = 0;       // pixels the figures are over (0: none measured yet)
-    int steepPixels = 0;  // surface seen steeper than 89 degrees, not counted (ErrorStats.h)
+    int otherSurface = 0;    // pixels on another surface than the exact one (> 2 texels off)
+    int pixels = 0;          // pixels the figures are over (0: none measured yet)
+    int steepPixels = 0;     // surface seen steeper than 89 degrees, not counted (ErrorStats.h)
+    int offRegionPixels = 0; // exact hit off the surface the view shows, not counted
     bool valid = false;
 };
 

@@ -2,16 +2,18 @@
 
 #include "parallax/render/RenderTarget.h" // parallax-render
 #include "preview/FramePacer.h"
+#include "preview/HeatLegend.h"
 #include "preview/PreviewRenderer.h"
 #include "preview/ViewInteraction.h"
 #include "widgets/Hints.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QKeyEvent>
-#include <QLinearGradient>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
+#include <QPointer>
 #include <QTimer>
 #include <QWheelEvent>
 #include <algorithm>
@@ -26,6 +28,34 @@ constexpr double kWipeGrab = 8.0;
 double g_measureSliceMs = 30.0;
 // Drawing waits this long after the turn that drew last (FramePacer::endTurn).
 constexpr qint64 kBreathMs = 10;
+
+// Notes the user's input for FramePacer::inputRecently, whatever widget it goes to.
+class InputWatch : public QObject {
+public:
+    using QObject::QObject;
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        switch (event->type()) {
+        case QEvent::MouseButtonPress:
+        case QEvent::MouseButtonDblClick:
+        case QEvent::KeyPress:
+        case QEvent::Wheel:
+        case QEvent::TouchBegin:
+            FramePacer::noteInput();
+            break;
+        default:
+            break;
+        }
+        return QObject::eventFilter(watched, event);
+    }
+};
+
+void watchInput() {
+    static QPointer<InputWatch> watch;
+    if (!watch && qApp) {
+        watch = new InputWatch(qApp);
+        qApp->installEventFilter(watch);
+    }
+}
 } // namespace
 
 void PreviewWidget::setMeasureSliceMs(double ms) {
@@ -33,6 +63,7 @@ void PreviewWidget::setMeasureSliceMs(double ms) {
 }
 
 PreviewWidget::PreviewWidget(QWidget* parent) : QOpenGLWidget(parent) {
+    watchInput();
     setMinimumSize(96, 72);
     setFocusPolicy(Qt::ClickFocus);
     setStatusTip(hints::viewportHelp());
@@ -131,7 +162,8 @@ void PreviewWidget::measureSlice() {
         this, [] { FramePacer::endTurn(); }, Qt::QueuedConnection);
     ++m_measureSlices;
     if (!measured) {
-        m_sliceTimer->start(0); // the rest after the events waiting
+        // The rest after the events waiting; later while a pass waits for the user to pause.
+        m_sliceTimer->start(m_renderer->measureWaitsForInput() ? 50 : 0);
         return;
     }
     const Result<PreviewStats>& stats = *measured;
@@ -155,6 +187,10 @@ std::optional<float> PreviewWidget::uniformValue(const QString& name) {
 
 const GpuMaterial* PreviewWidget::gpuMaterial() const {
     return m_renderer ? m_renderer->gpuMaterial() : nullptr;
+}
+
+const ShaderCache* PreviewWidget::shaderCache() const {
+    return m_renderer ? &m_renderer->shaders() : nullptr;
 }
 
 bool PreviewWidget::uploading() const {
@@ -280,7 +316,7 @@ void PreviewWidget::paintGL() {
 void PreviewWidget::drawOverlays(QPainter& painter, bool heatMap, bool message) {
     painter.setFont(font());
     if (heatMap)
-        drawHeatLegend(painter);
+        drawHeatLegend(painter, heatLegend());
     if (m_scene.overlays.wipe) {
         const double x = m_scene.overlays.wipePosition * width();
         painter.setPen(QPen(Qt::white, 2));
@@ -304,23 +340,8 @@ void PreviewWidget::drawOverlays(QPainter& painter, bool heatMap, bool message) 
     }
 }
 
-void PreviewWidget::drawHeatLegend(QPainter& painter) {
-    // The heat map's scale, bottom left: what blue, green, yellow and red mean.
-    const QFontMetrics fm(font());
-    const int h = fm.height();
-    const QRect bar(h / 2, height() - 2 * h, 8 * h, h / 2);
-    QLinearGradient gradient(bar.topLeft(), bar.topRight());
-    gradient.setColorAt(0.0, QColor(44, 95, 214));
-    gradient.setColorAt(0.25, QColor(63, 179, 79));
-    gradient.setColorAt(0.5, QColor(240, 208, 58));
-    gradient.setColorAt(1.0, QColor(216, 52, 44));
-    painter.fillRect(bar.adjusted(-4, -4, 4, h + 4), QColor(0, 0, 0, 150));
-    painter.fillRect(bar, gradient);
-    painter.setPen(Qt::white);
-    const QRect labels(bar.left(), bar.bottom() + 2, bar.width(), h);
-    painter.drawText(labels, Qt::AlignLeft, QStringLiteral("0"));
-    painter.drawText(labels, Qt::AlignHCenter, QStringLiteral("1"));
-    painter.drawText(labels, Qt::AlignRight, tr("≥2 texels"));
+HeatLegendLayout PreviewWidget::heatLegend() const {
+    return layoutHeatLegend(QFontMetrics(font()), size());
 }
 
 void PreviewWidget::mousePressEvent(QMouseEvent* event) {
@@ -360,7 +381,8 @@ void PreviewWidget::mouseReleaseEvent(QMouseEvent*) {
 }
 
 void PreviewWidget::mouseDoubleClickEvent(QMouseEvent* event) {
-    emit cameraDragged(defaultCamera());
+    emit cameraDragged(framed(defaultCamera(), m_scene.view,
+                              height() > 0 ? float(width()) / float(height()) : 1.0f));
     event->accept();
 }
 

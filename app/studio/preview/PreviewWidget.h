@@ -6,6 +6,7 @@
 
 #include "parallax/Result.h"
 #include "parallax/image/Image.h"
+#include "preview/HeatLegend.h"
 #include "preview/PreviewScene.h"
 
 #include <QElapsedTimer>
@@ -16,7 +17,8 @@
 
 namespace px {
 class GpuMaterial;
-}
+class ShaderCache;
+} // namespace px
 
 namespace px::studio {
 
@@ -42,6 +44,9 @@ public:
     std::optional<float> uniformValue(const QString& name);
     // The maps the last frame drew with; views showing the same maps share them (tests).
     const GpuMaterial* gpuMaterial() const;
+    // The compiled variants it draws with, one cache for every view (tests); null before the
+    // first frame.
+    const ShaderCache* shaderCache() const;
     // Whether the scene's maps are still going up on a worker (the view draws what it has).
     bool uploading() const;
     // Turns of the event loop the figures have taken so far (tests), and the drawing each takes
@@ -52,6 +57,9 @@ public:
     // `scene` drawn offscreen at `pixels` on this view's context, without the overlays (heat map,
     // messages): a picture to save. Fails without a live preview or over the GL's limits.
     Result<Image> renderImage(const PreviewScene& scene, QSize pixels);
+
+    // Where the heat map's scale is drawn, at this view's size and font (tests).
+    HeatLegendLayout heatLegend() const;
 
     QSize sizeHint() const override { return {320, 240}; }
 
@@ -83,7 +91,6 @@ private:
     void measureSlice();
     void dropMeasurement();
     void drawOverlays(class QPainter& painter, bool heatMap, bool message);
-    void drawHeatLegend(class QPainter& painter);
 
     PreviewScene m_scene;
     PreviewStats m_stats;

@@ -40,6 +40,13 @@ struct SharedView {
     bool showEnvironment = true; // behind the mesh, under an environment
 };
 
+// `camera` from the same angles, framing `view`'s mesh in a view of `aspect` (width / height): the
+// plane at defaultCamera()'s distance, filling the view; any other mesh as close as it stays
+// whole seen from these angles, with a margin (never farther than its bounding sphere needs).
+OrbitCamera framed(OrbitCamera camera, const SharedView& view, float aspect);
+// The radius of the sphere about the origin holding `view`'s mesh.
+float meshRadius(const SharedView& view);
+
 struct ViewOverlays {
     bool heatMap = false;
     bool wipe = false;                          // A/B wipe on

@@ -21,7 +21,8 @@ QString Viewport::figuresExplained() {
               "the exact intersection, in texels (mean, 99th percentile and max), "
               "and the share of pixels whose hit lies on another surface (more than "
               "2 texels from the exact one): a few such pixels lift the mean above "
-              "the p99.");
+              "the p99. Left out: pixels seen steeper than 89°, and pixels whose exact "
+              "hit lies off the surface this view shows (near a mesh's silhouette).");
 }
 
 Viewport::Viewport(int index, MaterialDocument* document, const QString& liveReason,
@@ -210,9 +211,15 @@ void Viewport::showStats() {
                              .arg(st.meanError, 0, 'f', 3);
             QString third =
                 tr("%1 % on another surface").arg(100.0 * st.otherSurface / st.pixels, 0, 'f', 2);
-            // A mesh's rims (docs/meshes.md): said, so the figures' pixels are known.
+            // What is left out (docs/meshes.md): said, so the figures' pixels are known.
+            QStringList left;
             if (st.steepPixels > 0)
-                third += tr(" · %1 px steeper than 89° not counted").arg(st.steepPixels);
+                left << tr("%1 px steeper than 89°").arg(st.steepPixels);
+            if (st.offRegionPixels > 0)
+                left << tr("%1 px whose exact hit is off the visible surface")
+                            .arg(st.offRegionPixels);
+            if (!left.isEmpty())
+                third += tr(" · not counted: %1").arg(left.join(QStringLiteral(", ")));
             m_figures << third;
         } else
             m_figures << (st.valid ? tr("no surface in view") : tr("measuring the error…"));

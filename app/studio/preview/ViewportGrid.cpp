@@ -1,5 +1,6 @@
 #include "preview/ViewportGrid.h"
 
+#include "preview/PreviewWidget.h"
 #include "preview/Viewport.h"
 
 #include <QGridLayout>
@@ -81,15 +82,30 @@ void ViewportGrid::editView(const SharedView& view) {
     applyView(m_active, view);
 }
 
+void ViewportGrid::showMesh(SharedView view) {
+    const SharedView& shown = activeView();
+    const bool sameMesh = view.meshData ? view.meshFile == shown.meshFile && shown.meshData
+                                        : !shown.meshData && view.mesh == shown.mesh;
+    if (!sameMesh)
+        view.camera = framed(view.camera, view, aspect(m_active));
+    applyView(m_active, view);
+}
+
 void ViewportGrid::resetCameras() {
     for (Viewport* v : m_viewports) {
         if (m_linked || v->index() == m_active) {
             SharedView view = v->view();
-            view.camera = defaultCamera();
+            view.camera = framed(defaultCamera(), view, aspect(m_active));
             v->setView(view);
         }
     }
     emit viewEdited();
+}
+
+float ViewportGrid::aspect(int index) const {
+    const Viewport* v = viewport(index);
+    const QWidget* picture = v->preview() ? static_cast<const QWidget*>(v->preview()) : v;
+    return picture->height() > 0 ? float(picture->width()) / float(picture->height()) : 1.0f;
 }
 
 void ViewportGrid::applyView(int index, const SharedView& view) {

@@ -34,7 +34,13 @@ public:
     const SharedView& activeView() const;
     // Sets the light, mesh or camera of the active viewport, and of all while linked.
     void editView(const SharedView& view);
+    // editView with another mesh: the camera, from the same angles, frames it whole (ViewSettings.h
+    // framed()) when it is not the mesh shown before.
+    void showMesh(SharedView view);
+    // Every camera (the active one when unlinked) back to the default angles, framing its mesh.
     void resetCameras();
+    // Width / height of viewport `index`'s picture.
+    float aspect(int index) const;
 
 signals:
     void activeViewportChanged(int index);

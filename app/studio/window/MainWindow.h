@@ -151,6 +151,8 @@ private:
     bool loadMeshWith(const QString& path, int uvSet, bool remembered);
     void rememberMaterialMesh();
     void restoreMaterialMesh();
+    void rememberMaterialLight(); // MainWindowEnvironment.cpp
+    void restoreMaterialLight();
     void exportDialog();
     void showShortcuts();
     void runBake(BakeKind kind);
@@ -174,7 +176,8 @@ private:
     QString m_lastProblem;
     bool m_interactive = true;
     std::function<void(float)> m_meshProgressObserver;
-    bool m_layoutRestored = false; // save it on close only if it was restored
+    bool m_layoutRestored = false;   // save it on close only if it was restored
+    bool m_restoringPreview = false; // opening a material: what it is previewed with is not new
 
     struct Actions;
     std::unique_ptr<Actions> m_actions;

@@ -2,22 +2,41 @@
 // prefiltered in the background (docs/lighting.md).
 
 #include "jobs/BackgroundLoad.h"
+#include "model/MaterialDocument.h"
 #include "panels/ViewPanel.h"
 #include "parallax/light/Environment.h"
 #include "preview/ViewportGrid.h"
+#include "widgets/FileDialogs.h"
 #include "window/MainWindow.h"
+#include "window/MaterialSettings.h"
 
-#include <QFileDialog>
 #include <QFileInfo>
+#include <QSettings>
 #include <QStatusBar>
 #include <memory>
 
 namespace px::studio {
 
 namespace {
+
 const QString kEnvironmentFilter =
     QObject::tr("Environments (*.hdr *.exr *.tif *.tiff *.png);;All files (*)");
+
+// How a material file was last lit in the editor (its settings, as its mesh: MainWindowMesh.cpp):
+// "previewEnvironment" is "sky", a file, or "" for none; a material never shown has no key.
+struct LightKeys {
+    QString environment, exposure, showEnvironment;
+    explicit LightKeys(const QString& material)
+        : environment(settingsKeyForFile("previewEnvironment", material)),
+          exposure(settingsKeyForFile("previewExposure", material)),
+          showEnvironment(settingsKeyForFile("previewShowEnvironment", material)) {}
+};
+
+QString environmentOf(const SharedView& view) {
+    return view.environment ? view.environmentName : QString();
 }
+
+} // namespace
 
 bool MainWindow::setEnvironment(const QString& source) {
     SharedView view = m_viewports->activeView();
@@ -56,9 +75,46 @@ bool MainWindow::setEnvironment(const QString& source) {
 
 void MainWindow::loadEnvironmentDialog() {
     const QString path =
-        QFileDialog::getOpenFileName(this, tr("Load Environment"), QString(), kEnvironmentFilter);
+        askOpenFile(this, FileKind::Environment, tr("Load Environment"), kEnvironmentFilter);
     if (!path.isEmpty())
         setEnvironment(path);
+}
+
+// Called whenever a view changes: writes only what changed.
+void MainWindow::rememberMaterialLight() {
+    const QString material = m_document->filePath();
+    if (material.isEmpty() || m_restoringPreview)
+        return;
+    const SharedView& view = m_viewports->activeView();
+    const LightKeys keys(material);
+    QSettings settings;
+    auto put = [&settings](const QString& key, const QVariant& value) {
+        if (settings.value(key) != value)
+            settings.setValue(key, value);
+    };
+    put(keys.environment, environmentOf(view));
+    put(keys.exposure, double(view.exposure));
+    put(keys.showEnvironment, view.showEnvironment);
+}
+
+void MainWindow::restoreMaterialLight() {
+    const QString material = m_document->filePath();
+    const LightKeys keys(material);
+    const QSettings settings;
+    if (material.isEmpty() || !settings.contains(keys.environment))
+        return; // never shown here: the light stays as it is
+    const QString environment = settings.value(keys.environment).toString();
+    const float exposure = settings.value(keys.exposure, 0.0).toFloat();
+    const bool show = settings.value(keys.showEnvironment, true).toBool();
+    // The environment first (a file that is gone: a message, and the light drawn before stays).
+    if (environment != environmentOf(m_viewports->activeView()))
+        setEnvironment(environment);
+    SharedView view = m_viewports->activeView();
+    if (view.exposure != exposure || view.showEnvironment != show) {
+        view.exposure = exposure;
+        view.showEnvironment = show;
+        m_viewports->editView(view);
+    }
 }
 
 } // namespace px::studio

@@ -10,17 +10,18 @@
 #include "panels/MaterialPanel.h"
 #include "parallax/mesh/MeshLoader.h"
 #include "preview/ViewportGrid.h"
+#include "widgets/FileDialogs.h"
 #include "window/MainWindow.h"
 #include "window/RecentFiles.h"
 
 #include <QDragEnterEvent>
 #include <QDropEvent>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QScopedValueRollback>
 #include <QStatusBar>
 
 namespace px::studio {
@@ -42,6 +43,11 @@ namespace {
 const QString kImageFilter =
     QObject::tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr *.bmp *.tga *.hdr);;All files (*)");
 const QString kMaterialFilter = QObject::tr("Materials (*.json);;All files (*)");
+
+// Where the open material is, for dialogs not used yet (FileDialogs.h); empty for a new one.
+QString folderOf(const QString& file) {
+    return file.isEmpty() ? QString() : QFileInfo(file).absolutePath();
+}
 
 bool isMaterialFile(const QString& path) {
     return QFileInfo(path).suffix().compare(QLatin1String("json"), Qt::CaseInsensitive) == 0;
@@ -76,7 +82,12 @@ bool MainWindow::openFile(const QString& path) {
     m_recent->add(path);
     showNotes(loaded->notes);
     bakeMissingConeMaps();
-    restoreMaterialMesh();
+    {
+        // Read back as a whole: loading the mesh must not record the light it finds.
+        const QScopedValueRollback restoring(m_restoringPreview, true);
+        restoreMaterialMesh();
+        restoreMaterialLight();
+    }
     return true;
 }
 
@@ -107,6 +118,7 @@ bool MainWindow::saveTo(const QString& path) {
     m_document->markSaved(*saved, QFileInfo(path).absoluteFilePath());
     m_recent->add(path);
     rememberMaterialMesh();
+    rememberMaterialLight();
     statusBar()->showMessage(tr("Saved %1.").arg(QFileInfo(path).fileName()), 5000);
     return true;
 }
@@ -122,7 +134,7 @@ bool MainWindow::saveAs() {
     if (suggestion.isEmpty())
         suggestion = QString::fromStdString(m_document->material().name) + QStringLiteral(".json");
     const QString path =
-        QFileDialog::getSaveFileName(this, tr("Save Material"), suggestion, kMaterialFilter);
+        askSaveFile(this, FileKind::Material, tr("Save Material"), suggestion, kMaterialFilter);
     if (path.isEmpty())
         return false;
     return saveTo(path);
@@ -273,21 +285,23 @@ void MainWindow::showImportSummary(const ImportedSet& set) {
 }
 
 void MainWindow::openDialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open Material"), {}, kMaterialFilter);
+    const QString path = askOpenFile(this, FileKind::Material, tr("Open Material"), kMaterialFilter,
+                                     folderOf(m_document->filePath()));
     if (!path.isEmpty())
         openFile(path);
 }
 
 void MainWindow::importMapDialog(MapKind kind) {
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Load %1 Map").arg(QString::fromUtf8(mapTitle(kind).data())), {}, kImageFilter);
+    const QString path = askOpenFile(
+        this, FileKind::Map, tr("Load %1 Map").arg(QString::fromUtf8(mapTitle(kind).data())),
+        kImageFilter, folderOf(m_document->filePath()));
     if (!path.isEmpty())
         loadMap(kind, path);
 }
 
 void MainWindow::importFolderDialog() {
-    const QString folder = QFileDialog::getExistingDirectory(this, tr("Import a Folder of Maps"));
+    const QString folder = askFolder(this, FileKind::TextureFolder, tr("Import a Folder of Maps"),
+                                     folderOf(m_document->filePath()));
     if (!folder.isEmpty())
         importFolder(folder);
 }

@@ -7,14 +7,14 @@
 #include "panels/ViewPanel.h"
 #include "parallax/mesh/MeshLoader.h"
 #include "preview/ViewportGrid.h"
+#include "widgets/FileDialogs.h"
 #include "window/MainWindow.h"
+#include "window/MaterialSettings.h"
 #include "window/RecentFiles.h"
 
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QSettings>
 #include <QStatusBar>
-#include <QUrl>
 #include <atomic>
 #include <memory>
 
@@ -24,23 +24,17 @@ namespace {
 
 const QString kMeshFilter = QObject::tr("Meshes (*.obj *.gltf *.glb);;All files (*)");
 
-// One settings key per file; its path, percent-encoded, cannot open a settings group.
-QString fileKey(const char* group, const QString& path) {
-    return QString::fromLatin1(group) + QLatin1Char('/') +
-           QString::fromLatin1(QUrl::toPercentEncoding(QFileInfo(path).absoluteFilePath()));
-}
-
 QString meshKey(const QString& materialPath) {
-    return fileKey("previewMesh", materialPath);
+    return settingsKeyForFile("previewMesh", materialPath);
 }
 
 QString materialUvSetKey(const QString& materialPath) {
-    return fileKey("previewMeshUvSet", materialPath);
+    return settingsKeyForFile("previewMeshUvSet", materialPath);
 }
 
 // The uv set a mesh file was last shown with, whatever the material (the recent meshes).
 QString meshUvSetKey(const QString& meshPath) {
-    return fileKey("meshUvSet", meshPath);
+    return settingsKeyForFile("meshUvSet", meshPath);
 }
 
 } // namespace
@@ -102,7 +96,7 @@ bool MainWindow::loadMeshWith(const QString& path, int uvSet, bool remembered) {
     view.meshFile = QFileInfo(path).absoluteFilePath();
     view.meshUvSet = loaded->uvSet;
     view.meshUvSets = loaded->uvSets;
-    m_viewports->editView(view);
+    m_viewports->showMesh(view);
     m_recentMeshes->add(path);
     QSettings().setValue(meshUvSetKey(path), view.meshUvSet);
     QString message = QString::fromStdString(loaded->summary());
@@ -113,8 +107,7 @@ bool MainWindow::loadMeshWith(const QString& path, int uvSet, bool remembered) {
 }
 
 void MainWindow::loadMeshDialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Load Mesh"), QString(), kMeshFilter);
+    const QString path = askOpenFile(this, FileKind::Mesh, tr("Load Mesh"), kMeshFilter);
     if (!path.isEmpty())
         loadMesh(path);
 }
@@ -122,7 +115,7 @@ void MainWindow::loadMeshDialog() {
 // Called whenever a view changes: writes only when the material's mesh or uv set did.
 void MainWindow::rememberMaterialMesh() {
     const QString material = m_document->filePath();
-    if (material.isEmpty())
+    if (material.isEmpty() || m_restoringPreview)
         return;
     const SharedView& view = m_viewports->activeView();
     const QString mesh = view.meshData ? view.meshFile : QString();

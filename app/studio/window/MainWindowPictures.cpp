@@ -6,10 +6,10 @@
 #include "preview/PreviewWidget.h"
 #include "preview/Viewport.h"
 #include "preview/ViewportGrid.h"
+#include "widgets/FileDialogs.h"
 #include "window/MainWindow.h"
 
 #include <QCoreApplication>
-#include <QFileDialog>
 #include <QInputDialog>
 #include <QProgressDialog>
 #include <QRegularExpression>
@@ -110,9 +110,10 @@ bool MainWindow::saveTurntable(const QString& file, QSize size, int frames) {
 
 // File > Save View/All Views/Turntable: a file, then the size (the view's own by default).
 void MainWindow::picturesDialog(PictureKind kind) {
-    const QString file = QFileDialog::getSaveFileName(
-        this, kind == PictureKind::Turntable ? tr("Save Turntable") : tr("Save Picture"),
-        QStringLiteral("view.png"), kPngFilter);
+    const QString file =
+        askSaveFile(this, FileKind::Picture,
+                    kind == PictureKind::Turntable ? tr("Save Turntable") : tr("Save Picture"),
+                    QStringLiteral("view.png"), kPngFilter);
     if (file.isEmpty())
         return;
     const QWidget* view = m_viewports->viewport(m_viewports->activeViewport())->preview();

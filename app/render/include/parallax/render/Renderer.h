@@ -54,7 +54,9 @@ struct DrawOptions {
 class Renderer {
 public:
     // Needs a current OpenGL 4.3 context; the error names what the context offers otherwise.
-    static Result<std::unique_ptr<Renderer>> create();
+    // `shaders`: a cache shared with the renderers of contexts sharing this one's objects (an
+    // editor's views), so each variant compiles once for all of them; null: one of its own.
+    static Result<std::unique_ptr<Renderer>> create(std::shared_ptr<ShaderCache> shaders = nullptr);
 
     // The variant this material and these options draw with, given the maps `gpu` has.
     VariantKey variantFor(const GpuMaterial& gpu, const Material& material,
@@ -71,7 +73,7 @@ public:
                               const DirectionalLight& light, const DrawOptions& options,
                               glm::ivec2 size);
 
-    ShaderCache& shaders() { return m_shaders; }
+    ShaderCache& shaders() { return *m_shaders; }
     const GlInfo& glInfo() const { return m_info; }
 
 private:
@@ -81,7 +83,7 @@ private:
                           float exposure, float aspect);
 
     GlInfo m_info;
-    ShaderCache m_shaders;
+    std::shared_ptr<ShaderCache> m_shaders;
     std::map<MeshKind, GpuMesh> m_meshes;
     std::shared_ptr<const MeshData> m_customSource; // what m_custom holds
     GpuMesh m_custom;
