@@ -9,6 +9,7 @@
 #include <QApplication>
 #include <QFile>
 #include <QFileDialog>
+#include <QLineEdit>
 #include <QTimer>
 
 using namespace px;
@@ -41,7 +42,15 @@ void answerNextDialog(const QString& answer, DialogAnswer* seen) {
             dialog->reject();
             return;
         }
-        dialog->selectFile(answer);
+        if (dialog->fileMode() == QFileDialog::Directory) {
+            // Go into the folder and choose it with no name typed, as a user does: selectFile()
+            // with a folder races the dialog's model, which may still be listing its parent.
+            dialog->setDirectory(answer);
+            if (auto* name = dialog->findChild<QLineEdit*>("fileNameEdit"))
+                name->clear();
+        } else {
+            dialog->selectFile(answer);
+        }
         QMetaObject::invokeMethod(dialog, &QDialog::accept); // protected in QFileDialog
     });
     timer->start();

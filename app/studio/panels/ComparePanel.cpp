@@ -28,6 +28,8 @@ ComparePanel::ComparePanel(MaterialDocument* document, QWidget* parent)
                           "renderers)."));
     m_axis->setSizeAdjustPolicy(QComboBox::AdjustToContents); // never cut the axis's name
     m_axis->setMinimumContentsLength(12);
+    // Below the views the dock is as wide as they are: the layout must not squeeze the name.
+    m_axis->setSizePolicy(QSizePolicy::Minimum, QSizePolicy::Fixed);
     m_rays = new QSpinBox(this);
     m_rays->setRange(8, 512);
     m_rays->setValue(64);
