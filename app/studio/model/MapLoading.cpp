@@ -140,6 +140,7 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
             return field.error();
         assets.height = std::move(*field);
         next.material.heightIsDepth = depth;
+        next.material.heightDerivedFrom.clear();
         dropDerivedMaps(next, assets, loaded.notes);
         break;
     }
@@ -184,6 +185,12 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
                       : kind == MapKind::Roughness ? assets.roughness
                                                    : assets.metallic;
         slot = std::move(*image);
+        // A file of its own: read as stored, not as the packed file it replaces.
+        (kind == MapKind::Ao          ? next.material.surface.ao
+         : kind == MapKind::Roughness ? next.material.surface.roughness
+                                      : next.material.surface.metallic) = HeightChannel::Red;
+        if (kind == MapKind::Roughness)
+            next.material.surface.gloss = false;
         break;
     }
     }
@@ -200,23 +207,13 @@ Result<Loaded> reloadHeight(const DocumentState& state) {
     return loadMapFile(state, MapKind::Height, file, state.material.heightIsDepth);
 }
 
-Result<Loaded> loadMaps(const DocumentState& state, const std::vector<SetFile>& maps) {
-    Loaded all;
-    all.state = state;
-    for (const SetFile& map : maps) {
-        Result<Loaded> next = loadMapFile(all.state, map.kind, map.path, map.depthBySuffix);
-        if (!next)
-            return next.error();
-        all.state = std::move(next->state);
-        all.notes.insert(all.notes.end(), next->notes.begin(), next->notes.end());
-    }
-    return all;
-}
-
 DocumentState importedState(ImportedSet set) {
     DocumentState state;
     state.material = std::move(set.material);
     set.assets.albedo = set.assets.albedo.empty() ? Image{} : toRgb(std::move(set.assets.albedo));
+    // A height map derived from the normal map has no file yet: saved with the material.
+    state.setUnsaved(MapKind::Height,
+                     !set.assets.height.empty() && set.material.maps.height.empty());
     state.assets = std::make_shared<const MaterialAssets>(std::move(set.assets));
     return state;
 }

@@ -153,6 +153,11 @@ Result<ExportResult> exportMaterial(const Material& material, const std::string&
     ExportResult result;
     if (!resolved->note.empty())
         result.notes.push_back(resolved->note);
+    if (!material.heightDerivedFrom.empty())
+        result.notes.push_back("the height map was derived from the normal map " +
+                               material.heightDerivedFrom +
+                               " by integrating its slopes: a guess at the relief, not a measured "
+                               "one");
     exporter::ExportJob job{resolved->material,
                             options,
                             std::move(*assets),

@@ -125,6 +125,7 @@ Status writeGltf(ExportJob& job) {
 
     // The parallax settings: the project's own material, maps renamed to the exported files.
     Material extras = m;
+    extras.surface = {}; // the maps below are written one a file, as the material reads them
     extras.maps = {};
     extras.heightChannel = HeightChannel::Red;
     extras.heightIsDepth = false;

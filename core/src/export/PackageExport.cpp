@@ -63,6 +63,7 @@ Status writePackage(ExportJob& job) {
     const Material& m = job.material;
     const MapSet used = mapsUsed(m);
     Material out = m; // the package's own material: same settings, its own map files
+    out.surface = {}; // occlusion, roughness and metallic are written one map a file
     out.maps = {};
     out.heightChannel = HeightChannel::Red;
     out.heightIsDepth = false; // the height map is written white = high

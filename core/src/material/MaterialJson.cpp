@@ -184,8 +184,8 @@ bool readHeader(const json& root, Reader& r) {
 
 void readBody(const json& root, Reader& r, Material& m) {
     r.object(root, "",
-             {"format", "version", "name", "maps", "height", "wrap", "tiling", "technique",
-              "normal", "shadow", "lighting"});
+             {"format", "version", "name", "maps", "surface", "height", "wrap", "tiling",
+              "technique", "normal", "shadow", "lighting"});
     r.string(root, "", "name", m.name);
     if (const json* maps = r.member(root, "maps");
         maps && r.object(*maps, "/maps",
@@ -205,12 +205,24 @@ void readBody(const json& root, Reader& r, Material& m) {
             r.string(*maps, "/maps", key, *field);
         }
     }
+    if (const json* s = r.member(root, "surface");
+        s && r.object(*s, "/surface",
+                      {"aoChannel", "roughnessChannel", "metallicChannel", "roughnessIsGloss"})) {
+        r.enumeration(*s, "/surface", "aoChannel", parseHeightChannel, heightChannelNames(),
+                      m.surface.ao);
+        r.enumeration(*s, "/surface", "roughnessChannel", parseHeightChannel, heightChannelNames(),
+                      m.surface.roughness);
+        r.enumeration(*s, "/surface", "metallicChannel", parseHeightChannel, heightChannelNames(),
+                      m.surface.metallic);
+        r.boolean(*s, "/surface", "roughnessIsGloss", m.surface.gloss);
+    }
     if (const json* h = r.member(root, "height");
-        h && r.object(*h, "/height", {"channel", "invert", "scale"})) {
+        h && r.object(*h, "/height", {"channel", "invert", "scale", "derivedFrom"})) {
         r.enumeration(*h, "/height", "channel", parseHeightChannel, heightChannelNames(),
                       m.heightChannel);
         r.boolean(*h, "/height", "invert", m.heightIsDepth);
         r.number(*h, "/height", "scale", kHeightScale, m.heightScale);
+        r.string(*h, "/height", "derivedFrom", m.heightDerivedFrom);
     }
     static constexpr std::string_view kWraps[] = {"repeat", "clamp"};
     r.enumeration(root, "", "wrap", parseWrapMode, kWraps, m.wrap);
@@ -344,9 +356,17 @@ std::string materialToJson(const Material& m) {
             maps[key] = *value;
     }
     root["maps"] = maps;
+    // Written only where a packed file asks for it, so ordinary materials read as before.
+    if (m.surface != SurfaceChannels{})
+        root["surface"] = {{"aoChannel", toString(m.surface.ao)},
+                           {"roughnessChannel", toString(m.surface.roughness)},
+                           {"metallicChannel", toString(m.surface.metallic)},
+                           {"roughnessIsGloss", m.surface.gloss}};
     root["height"] = {{"channel", toString(m.heightChannel)},
                       {"invert", m.heightIsDepth},
                       {"scale", shortestDecimal(m.heightScale)}};
+    if (!m.heightDerivedFrom.empty())
+        root["height"]["derivedFrom"] = m.heightDerivedFrom;
     root["wrap"] = toString(m.wrap);
     root["tiling"] = shortestDecimal(m.tiling);
     if (m.autoQuality && m.autoQuality->budgetPixels && m.autoQuality->texelsPerPixel)

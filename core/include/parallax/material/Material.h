@@ -57,12 +57,26 @@ struct AutoQuality {
     }
 };
 
+// Which channel of their files the occlusion, roughness and metallic maps read: a packed file
+// (Unreal's ORM, Unity's mask map, CryEngine's gloss in a normal map's alpha) serves several maps.
+struct SurfaceChannels {
+    HeightChannel ao = HeightChannel::Red;
+    HeightChannel roughness = HeightChannel::Red;
+    HeightChannel metallic = HeightChannel::Red;
+    bool gloss = false; // the roughness file holds gloss (smoothness): roughness = 1 - value
+    bool operator==(const SurfaceChannels&) const = default;
+};
+
 struct Material {
     std::string name = "untitled";
     MaterialMaps maps;
+    SurfaceChannels surface;
     HeightChannel heightChannel = HeightChannel::Red;
     bool heightIsDepth = false; // white = deep: loaded inverted
-    float heightScale = 0.05f;  // s, uv units (docs/conventions.md §2)
+    // Set when the height map was made by integrating this normal map (its file name): a guess at
+    // the relief, not a measured one; exports say so.
+    std::string heightDerivedFrom;
+    float heightScale = 0.05f; // s, uv units (docs/conventions.md §2)
     WrapMode wrap = WrapMode::Repeat;
     float tiling = 1.0f; // uv repeats across a mesh
 
