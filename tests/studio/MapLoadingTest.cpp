@@ -198,7 +198,7 @@ private slots:
         QCOMPARE(QString::fromStdString(raw->maps.height), QString("../../a/maps/w_height.png"));
     }
 
-    void folderImportFindsMapsBySuffix() {
+    void folderImportFindsMapsByName() {
         QTemporaryDir dir;
         writeGrey(dir, "rock_disp.png", 8, 8, 0.5f);
         writeGrey(dir, "rock_color.png", 8, 8, 0.7f);
@@ -206,15 +206,14 @@ private slots:
         const Result<TextureSetPlan> found =
             planTextureSet(*folderFiles(dir.path().toStdString()), "dir");
         QVERIFY(found);
-        QCOMPARE(found->assigned.size(), std::size_t(2));
-        QCOMPARE(int(found->assigned.front().kind), int(MapKind::Height));
+        QCOMPARE(found->files.size(), std::size_t(2));
         QCOMPARE(found->ignored.size(), std::size_t(1));
-        const Result<Loaded> loaded =
-            loadMaps(makeSampleState(ProceduralMap::Bricks, 16), found->assigned);
-        QVERIFY(loaded);
-        QCOMPARE(loaded->state.assets->height.width, 8);
-        QCOMPARE(loaded->state.assets->albedo.width, 8);
-        QVERIFY(!loaded->state.isUnsaved(MapKind::Albedo));
+        Result<ImportedSet> set = importTextureSet(*found);
+        QVERIFY(set);
+        const DocumentState state = importedState(std::move(*set));
+        QCOMPARE(state.assets->height.width, 8);
+        QCOMPARE(state.assets->albedo.width, 8);
+        QVERIFY(!state.isUnsaved(MapKind::Albedo) && !state.isUnsaved(MapKind::Height));
     }
 
     void folderImportIsAllOrNothing() {
@@ -224,10 +223,9 @@ private slots:
         const Result<TextureSetPlan> found =
             planTextureSet(*folderFiles(dir.path().toStdString()), "dir");
         QVERIFY(found);
-        const Result<Loaded> loaded =
-            loadMaps(makeSampleState(ProceduralMap::Bricks, 16), found->assigned);
-        QVERIFY(!loaded);
-        QVERIFY(loaded.error().message.find("rock_normal.png") != std::string::npos);
+        const Result<ImportedSet> set = importTextureSet(*found);
+        QVERIFY(!set);
+        QVERIFY(set.error().message.find("rock_normal.png") != std::string::npos);
     }
 
     void badMaterialFileNamesItself() {

@@ -196,8 +196,8 @@ GreenHint greenHintOf(std::string_view word) {
 }
 
 bool isNeutralWord(std::string_view word) {
-    static constexpr std::array<std::string_view, 11> kFormats{
-        "png", "jpg", "jpeg", "exr", "tif", "tiff", "tga", "bmp", "hdr", "webp", "psd"};
+    static constexpr std::array<std::string_view, 12> kFormats{
+        "png", "jpg", "jpeg", "exr", "tif", "tiff", "tga", "bmp", "hdr", "webp", "psd", "dds"};
     if (std::find(kFormats.begin(), kFormats.end(), word) != kFormats.end())
         return word != "bmp"; // "bmp" is Node Wrangler's bump tag; as an extension it is gone
     if (digitsThen(word, "k") || digitsThen(word, "bit") || wordThenDigits(word, "lod") ||

@@ -103,9 +103,9 @@ Grouping group(const std::vector<std::string>& files) {
             if (found != g.sets.end())
                 e.set = found->second;
             else
-                e.why = std::string("a ") +
+                e.why = "tag " + r.tagText + " (" +
                         std::string(r.tag->what.empty() ? roleName(r.tag->role) : r.tag->what) +
-                        " map by its tag " + r.tagText + ", of no texture set here";
+                        "), of no texture set here";
             continue;
         }
         if (found != g.sets.end()) {

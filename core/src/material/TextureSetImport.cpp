@@ -376,9 +376,12 @@ void Importer::chooseSurface() {
         if (!file)
             continue;
         std::string channels;
+        Result<Image> image = load(*file);
+        const int present = image ? image->channels : 0;
         auto take = [&](const SetFile*& slot, std::optional<HeightChannel> channel,
                         HeightChannel& into, const char* what) {
-            if (slot || !channel)
+            // A grey file named as packed holds one map only: its red.
+            if (slot || !channel || static_cast<int>(*channel) >= present)
                 return;
             slot = file;
             into = *channel;

@@ -1,6 +1,7 @@
-// Importing texture sets the test writes itself: every convention (height or depth, OpenGL or
-// DirectX green, albedo with or without a suffix) over several seeds is read from the data; every
-// file is assigned or listed with why; two sets are never mixed; failures name their file.
+// Importing texture sets the test writes itself: height or depth and OpenGL or DirectX green over
+// several seeds are read from the data; every file is used or listed with why; two sets are never
+// mixed; a folder with no set is refused with the report; a normal-only set gets a derived height
+// on request; failures name their file. (Naming conventions: TextureSetConventionsTest.)
 
 #include "parallax/material/TextureSetImport.h"
 
@@ -27,6 +28,13 @@ bool mentions(const std::vector<SkippedFile>& list, const std::string& file,
     return std::any_of(list.begin(), list.end(), [&](const SkippedFile& s) {
         return s.path.ends_with(file) && s.why.find(why) != std::string::npos;
     });
+}
+
+std::string summaryOf(const ImportedSet& set) {
+    std::string text;
+    for (const std::string& line : importSummary(set))
+        text += line + "\n";
+    return text;
 }
 
 } // namespace
@@ -65,13 +73,12 @@ private slots:
         const Result<TextureSetPlan> plan = planTextureSet(filesOf(dir), "dir");
         QVERIFY2(plan, plan ? "" : plan.error().message.c_str());
         QCOMPARE(plan->name, spec.stem);
-        QCOMPARE(plan->assigned.size(), std::size_t(3));
-        QVERIFY(plan->ignored.empty() && plan->duplicates.empty());
-        QVERIFY(plan->find(MapKind::Albedo));
-        QCOMPARE(plan->find(MapKind::Albedo)->path, written.albedoFile);
+        QCOMPARE(plan->files.size(), std::size_t(3));
+        QVERIFY(plan->ignored.empty());
 
         const Result<ImportedSet> set = importTextureSet(*plan);
         QVERIFY2(set, set ? "" : set.error().message.c_str());
+        QCOMPARE(set->material.maps.albedo, written.albedoFile);
         QVERIFY(set->relief.fromData);
         QCOMPARE(set->material.heightIsDepth, depth);
         QCOMPARE(set->material.normalGreen, spec.green);
@@ -124,6 +131,8 @@ private slots:
         const Result<ImportedSet> set = importTextureSet(*planTextureSet(filesOf(dir), "dir"));
         QVERIFY2(set, set ? "" : set.error().message.c_str());
         QVERIFY2(!set->relief.fromData, set->relief.summary.c_str());
+        QCOMPARE(set->material.maps.normal, normal); // used as named, with a warning
+        QVERIFY(set->material.maps.height.ends_with("rock_depth.png"));
         QVERIFY(set->material.heightIsDepth);
         QVERIFY(set->relief.summary.find("do not follow") != std::string::npos);
     }
@@ -152,16 +161,20 @@ private slots:
         const Result<TextureSetPlan> plan = planTextureSet(files, "dir", "TOY_BOX");
         QVERIFY(plan);
         QCOMPARE(plan->name, std::string("toy_box"));
-        QCOMPARE(plan->assigned.size(), std::size_t(3));
-        for (const SetFile& f : plan->assigned)
+        QCOMPARE(plan->files.size(), std::size_t(3));
+        for (const SetFile& f : plan->files)
             QVERIFY2(f.path.find("toy_box") != std::string::npos, f.path.c_str());
         // Every other file is listed with why.
-        QCOMPARE(plan->assigned.size() + plan->ignored.size() + plan->duplicates.size(),
-                 files.size());
+        QCOMPARE(plan->files.size() + plan->ignored.size(), files.size());
         QVERIFY(mentions(plan->ignored, "bricks2_disp.png", "belongs to the set bricks2"));
-        QVERIFY(mentions(plan->ignored, "bricks2.png", "the albedo of the set bricks2"));
+        QVERIFY(mentions(plan->ignored, "bricks2.png", "belongs to the set bricks2"));
         QVERIFY(mentions(plan->ignored, "README.md", "not an image file"));
-        QVERIFY(mentions(plan->ignored, "wood.png", "no map suffix"));
+        QVERIFY(mentions(plan->ignored, "wood.png", "no map tag"));
+        const Result<ImportedSet> set = importTextureSet(*plan);
+        QVERIFY(set);
+        for (const std::string& path :
+             {set->material.maps.height, set->material.maps.normal, set->material.maps.albedo})
+            QVERIFY2(path.find("toy_box") != std::string::npos, path.c_str());
 
         const Result<TextureSetPlan> none = planTextureSet(files, "dir", "stones");
         QVERIFY(!none);
@@ -181,20 +194,21 @@ private slots:
         QVERIFY(writeTextFile(dir.filePath("notes.txt").toStdString(), "x"));
         const Result<TextureSetPlan> plan = planTextureSet(filesOf(dir), "dir");
         QVERIFY(plan);
-        // The suffixed albedo wins over the one named after the set; the first height file wins.
-        QCOMPARE(plan->find(MapKind::Albedo)->path, dir.filePath("rock_color.png").toStdString());
-        QCOMPARE(plan->find(MapKind::Height)->path, written.heightFile);
-        QVERIFY(mentions(plan->duplicates, "rock.png", "a second albedo map: rock_color.png"));
-        QVERIFY(
-            mentions(plan->duplicates, "rock_height.png", "a second height map: rock_disp.png"));
         const Result<ImportedSet> set = importTextureSet(*plan);
         QVERIFY(set);
-        std::string text;
-        for (const std::string& line : importSummary(*set))
-            text += line + "\n";
+        // The tagged albedo wins over the one named after the set; the first height file wins.
+        QCOMPARE(set->material.maps.albedo, dir.filePath("rock_color.png").toStdString());
+        QCOMPARE(set->material.maps.height, written.heightFile);
+        const std::string text = summaryOf(*set);
         for (const char* name : {"rock_disp.png", "rock_normal.png", "rock_color.png", "rock.png",
                                  "rock_height.png", "notes.txt", "Told by the normal map"})
             QVERIFY2(text.find(name) != std::string::npos, (text + " lacks " + name).c_str());
+        QVERIFY2(text.find("Not used: rock.png (named after the set, no tag: rock_color.png is the "
+                           "albedo)") != std::string::npos,
+                 text.c_str());
+        QVERIFY2(text.find("Not used: rock_height.png (another file for the same map: "
+                           "rock_disp.png is used)") != std::string::npos,
+                 text.c_str());
         QVERIFY(text.find("Ignored: notes.txt (not an image file)") != std::string::npos);
     }
 
@@ -208,17 +222,71 @@ private slots:
                  set.error().message.c_str());
     }
 
-    void aSetNeedsAHeightMap() {
+    void aSetNeedsReliefAndAFolderOfNothingIsRefusedWithTheReport() {
         QTemporaryDir dir;
         QVERIFY(writeTextFile(dir.filePath("rock_albedo.png").toStdString(), "x"));
         const Result<TextureSetPlan> plan = planTextureSet(filesOf(dir), "dir");
         QVERIFY(plan);
         const Result<ImportedSet> set = importTextureSet(*plan);
         QVERIFY(!set);
-        QVERIFY(set.error().message.find("The texture set rock has no height map") == 0);
-        const Result<TextureSetPlan> empty = planTextureSet({"/x/notes.txt"}, "x");
-        QVERIFY(!empty);
-        QVERIFY(empty.error().message.find("x: no image whose name ends in a map suffix") == 0);
+        QVERIFY2(set.error().message.find("The texture set rock has no height map and no normal "
+                                          "map") == 0,
+                 set.error().message.c_str());
+        const Result<TextureSetPlan> none =
+            planTextureSet({"/x/notes.txt", "/x/IMG_0001.jpg", "/x/rock_emission.png"}, "x");
+        QVERIFY(!none);
+        QCOMPARE(QString::fromStdString(none.error().message),
+                 QString("x: no texture set recognised (no file named as a height, normal or "
+                         "colour map of a set)\n"
+                         "  IMG_0001.jpg: no map tag (_albedo, _disp, _normal, ...), and not "
+                         "named after a set here\n"
+                         "  notes.txt: not an image file\n"
+                         "  rock_emission.png: tag _emission (emission), of no texture set here"));
+    }
+
+    void aNormalOnlySetGetsADerivedHeightOnRequest() {
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        spec.stem = "tiles";
+        spec.seed = 3;
+        spec.size = 96;
+        spec.green = NormalGreen::DirectX;
+        const WrittenSet written = writeTextureSet(dir.path().toStdString(), spec);
+        QVERIFY(QFile::remove(QString::fromStdString(written.heightFile)));
+        Result<ImportedSet> set = importTextureSet(*planTextureSet(filesOf(dir), "dir"));
+        QVERIFY2(set, set ? "" : set.error().message.c_str());
+        QVERIFY(set->heightMissing);
+        QVERIFY(set->material.maps.height.empty() && set->assets.height.empty());
+        QCOMPARE(set->material.normalGreen, NormalGreen::DirectX); // from the curl alone
+        QVERIFY2(summaryOf(*set).find("No height map") != std::string::npos,
+                 summaryOf(*set).c_str());
+
+        QVERIFY(deriveHeight(*set));
+        QVERIFY(!set->heightMissing);
+        QCOMPARE(set->material.heightDerivedFrom, std::string("tiles_normal.png"));
+        QVERIFY(set->material.maps.height.empty()); // no file until saved
+        QCOMPARE(set->assets.height.width, spec.size);
+        // Close to the height the normal map was baked from (scale 0.05): 5% RMS of its range.
+        double meanA = 0.0, meanB = 0.0, lo = 1.0, hi = 0.0;
+        const std::size_t n = written.height.texels.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            meanA += set->assets.height.texels[i] * set->material.heightScale;
+            meanB += written.height.texels[i] * 0.05;
+            lo = std::min(lo, double(written.height.texels[i]));
+            hi = std::max(hi, double(written.height.texels[i]));
+        }
+        double sum = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double e =
+                (set->assets.height.texels[i] * set->material.heightScale - meanA / n) -
+                (written.height.texels[i] * 0.05 - meanB / n);
+            sum += e * e;
+        }
+        QVERIFY2(std::sqrt(sum / n) < 0.05 * (hi - lo) * 0.05, qPrintable(QString::number(sum)));
+        const std::string text = summaryOf(*set);
+        QVERIFY2(text.find("derived from the normal map tiles_normal.png") != std::string::npos,
+                 text.c_str());
+        QVERIFY(!deriveHeight(*set)); // once
     }
 };
 
