@@ -149,7 +149,6 @@ Result<DerivedHeight> heightFromNormals(const Image& normals,
         return Error{"the normal map is too small to integrate (" + std::to_string(W) + "x" +
                      std::to_string(H) + ")"};
     DerivedHeight out;
-    out.periodic = options.periodic.value_or(tiles(normals));
 
     // Slopes in uv units per texel step: dh/du = -nx/nz, dh/dv = +ny/nz under OpenGL green
     // (docs/conventions.md §3), then averaged onto the steps between texel centres.
@@ -165,6 +164,23 @@ Result<DerivedHeight> heightFromNormals(const Image& normals,
             q[static_cast<std::size_t>(y) * W + x] = greenSign * ny / nz / H;
         }
     });
+    // A map tiles when its seams are like its inside and it does not climb on average (a ramp's
+    // normals tile, its height cannot).
+    if (options.periodic) {
+        out.periodic = *options.periodic;
+    } else {
+        double meanP = 0.0, meanQ = 0.0, sumP = 0.0, sumQ = 0.0;
+        for (std::size_t i = 0; i < N; ++i) {
+            meanP += p[i];
+            meanQ += q[i];
+            sumP += p[i] * p[i];
+            sumQ += q[i] * q[i];
+        }
+        const double n = static_cast<double>(N);
+        const bool level = std::abs(meanP / n) <= 0.1 * std::sqrt(sumP / n) + 1e-12 &&
+                           std::abs(meanQ / n) <= 0.1 * std::sqrt(sumQ / n) + 1e-12;
+        out.periodic = level && tiles(normals);
+    }
     // b = the slope of each step (x to x+1, y to y+1); free borders have no step past the edge.
     auto idx = [W](int x, int y) { return static_cast<std::size_t>(y) * W + x; };
     std::vector<double> bx(N, 0.0), by(N, 0.0);

@@ -120,6 +120,10 @@ std::vector<NameReading> readMapFileName(const std::string& fileName) {
     while (end > 0) {
         if (isNeutralWord(words[end - 1].text)) {
             --end;
+        } else if (green == GreenHint::None && end > 2 &&
+                   greenHintOf(words[end - 2].text + words[end - 1].text) != GreenHint::None) {
+            green = greenHintOf(words[end - 2].text + words[end - 1].text); // "Open" "GL"
+            end -= 2;
         } else if (green == GreenHint::None && end > 1 &&
                    greenHintOf(words[end - 1].text) != GreenHint::None) {
             green = greenHintOf(words[end - 1].text);
