@@ -24,6 +24,16 @@ std::string folderNameOf(const std::string& path) {
     return fs::absolute(fs::path(path)).parent_path().filename().string();
 }
 
+// Game and engine formats a set may ship in that the image reader does not take.
+bool unreadImageFormat(const std::string& path) {
+    const std::string ext = lower(fs::path(path).extension().string());
+    for (const char* known : {".dds", ".ktx", ".ktx2", ".webp", ".psd", ".gif", ".vtf"}) {
+        if (ext == known)
+            return true;
+    }
+    return false;
+}
+
 // One file as the grouping sees it.
 struct Entry {
     std::string path;
@@ -93,7 +103,10 @@ Grouping group(const std::vector<std::string>& files) {
     }
     for (Entry& e : g.entries) {
         if (!e.image) {
-            e.why = "not an image file";
+            e.why = unreadImageFormat(e.path) ? "an image format not read here (" +
+                                                    lower(fs::path(e.path).extension().string()) +
+                                                    "): convert it to PNG, TGA, TIFF or EXR"
+                                              : "not an image file";
             continue;
         }
         const NameReading& r = *e.chosen;

@@ -42,6 +42,12 @@ std::string fixed2(double value) {
     return text;
 }
 
+std::string shortNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
 const char* greenName(NormalGreen green) {
     return green == NormalGreen::OpenGL ? "OpenGL (Y+)" : "DirectX (Y-)";
 }
@@ -520,7 +526,7 @@ Status deriveHeight(ImportedSet& set, const BakeControl& control) {
                          fixed2(100.0 * derived->misfit) +
                          "% of the slopes left unexplained): a guess at the relief, not a "
                          "measured one. Height scale " +
-                         fixed2(derived->heightScale) + " matches the normal map's slopes.";
+                         shortNumber(derived->heightScale) + " matches the normal map's slopes.";
     set.notes.push_back("The height map is derived from " + normal +
                         ", marked so in the "
                         "material and in exports.");
@@ -532,9 +538,23 @@ std::vector<std::string> importSummary(const ImportedSet& set) {
     lines.push_back("Texture set " + set.plan.name + " imported as the material " +
                     set.material.name + ":");
     const Material& m = set.material;
+    // Relief first, then colour, then the rest, as a reader looks for them.
+    std::vector<const ImportedFile*> used;
     for (const ImportedFile& f : set.files) {
-        if (!f.used)
-            continue;
+        if (f.used)
+            used.push_back(&f);
+    }
+    auto order = [](const std::string& role) {
+        return role.starts_with("height")   ? 0
+               : role.starts_with("normal") ? 1
+               : role.starts_with("albedo") ? 2
+                                            : 3;
+    };
+    std::stable_sort(used.begin(), used.end(), [&](const ImportedFile* a, const ImportedFile* b) {
+        return order(a->role) < order(b->role);
+    });
+    for (const ImportedFile* pf : used) {
+        const ImportedFile& f = *pf;
         std::string line = "  " + f.role + ": " + fileName(f.path) + " (" + f.why + ")";
         if (absolutePath(f.path) == m.maps.height)
             line += m.heightIsDepth ? ", read as depth (white = deep)"
@@ -544,7 +564,7 @@ std::vector<std::string> importSummary(const ImportedSet& set) {
         lines.push_back(line);
     }
     if (!m.heightDerivedFrom.empty())
-        lines.push_back("  height map: derived from " + m.heightDerivedFrom + " (no file yet)");
+        lines.push_back("  height map: derived from " + m.heightDerivedFrom);
     if (!set.relief.summary.empty())
         lines.push_back(set.relief.summary);
     lines.insert(lines.end(), set.notes.begin(), set.notes.end());

@@ -232,8 +232,8 @@ private slots:
         QVERIFY2(set.error().message.find("The texture set rock has no height map and no normal "
                                           "map") == 0,
                  set.error().message.c_str());
-        const Result<TextureSetPlan> none =
-            planTextureSet({"/x/notes.txt", "/x/IMG_0001.jpg", "/x/rock_emission.png"}, "x");
+        const Result<TextureSetPlan> none = planTextureSet(
+            {"/x/notes.txt", "/x/IMG_0001.jpg", "/x/rock_emission.png", "/x/stone_nm.dds"}, "x");
         QVERIFY(!none);
         QCOMPARE(QString::fromStdString(none.error().message),
                  QString("x: no texture set recognised (no file named as a height, normal or "
@@ -241,7 +241,9 @@ private slots:
                          "  IMG_0001.jpg: no map tag (_albedo, _disp, _normal, ...), and not "
                          "named after a set here\n"
                          "  notes.txt: not an image file\n"
-                         "  rock_emission.png: tag _emission (emission), of no texture set here"));
+                         "  rock_emission.png: tag _emission (emission), of no texture set here\n"
+                         "  stone_nm.dds: an image format not read here (.dds): convert it to PNG, "
+                         "TGA, TIFF or EXR"));
     }
 
     void aNormalOnlySetGetsADerivedHeightOnRequest() {
