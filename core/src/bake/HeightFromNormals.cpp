@@ -151,56 +151,58 @@ Result<DerivedHeight> heightFromNormals(const Image& normals,
     DerivedHeight out;
 
     // Slopes in uv units per texel step: dh/du = -nx/nz, dh/dv = +ny/nz under OpenGL green
-    // (docs/conventions.md §3), then averaged onto the steps between texel centres.
+    // (docs/conventions.md §3). Computed where needed, not stored: an 8192² map holds only f.
     const double greenSign = options.green == NormalGreen::OpenGL ? 1.0 : -1.0;
     const std::size_t N = static_cast<std::size_t>(W) * H;
-    std::vector<double> p(N), q(N);
-    tbb::parallel_for(0, H, [&](int y) {
-        for (int x = 0; x < W; ++x) {
-            const double nx = 2.0 * normals.at(x, y, 0) - 1.0;
-            const double ny = 2.0 * normals.at(x, y, 1) - 1.0;
-            const double nz = std::max(2.0 * normals.at(x, y, 2) - 1.0, 0.05); // <= 87 degrees
-            p[static_cast<std::size_t>(y) * W + x] = -nx / nz / W;
-            q[static_cast<std::size_t>(y) * W + x] = greenSign * ny / nz / H;
-        }
-    });
+    auto nz = [&](int x, int y) { return std::max(2.0 * normals.at(x, y, 2) - 1.0, 0.05); };
+    auto p = [&](int x, int y) { return -(2.0 * normals.at(x, y, 0) - 1.0) / nz(x, y) / W; };
+    auto q = [&](int x, int y) {
+        return greenSign * (2.0 * normals.at(x, y, 1) - 1.0) / nz(x, y) / H;
+    };
     // A map tiles when its seams are like its inside and it does not climb on average (a ramp's
     // normals tile, its height cannot).
     if (options.periodic) {
         out.periodic = *options.periodic;
     } else {
         double meanP = 0.0, meanQ = 0.0, sumP = 0.0, sumQ = 0.0;
-        for (std::size_t i = 0; i < N; ++i) {
-            meanP += p[i];
-            meanQ += q[i];
-            sumP += p[i] * p[i];
-            sumQ += q[i] * q[i];
+        for (int y = 0; y < H; ++y) {
+            for (int x = 0; x < W; ++x) {
+                const double a = p(x, y), b = q(x, y);
+                meanP += a;
+                meanQ += b;
+                sumP += a * a;
+                sumQ += b * b;
+            }
         }
         const double n = static_cast<double>(N);
         const bool level = std::abs(meanP / n) <= 0.1 * std::sqrt(sumP / n) + 1e-12 &&
                            std::abs(meanQ / n) <= 0.1 * std::sqrt(sumQ / n) + 1e-12;
         out.periodic = level && tiles(normals);
     }
-    // b = the slope of each step (x to x+1, y to y+1); free borders have no step past the edge.
+    // b = the slope of each step (x to x+1, y to y+1), averaged from the texel centres at its
+    // ends; free borders have no step past the edge.
+    const bool periodic = out.periodic;
+    auto bx = [&](int x, int y) {
+        if (x < 0)
+            x = periodic ? W - 1 : -1;
+        if (x < 0 || (!periodic && x + 1 >= W))
+            return 0.0;
+        return 0.5 * (p(x, y) + p((x + 1) % W, y));
+    };
+    auto by = [&](int x, int y) {
+        if (y < 0)
+            y = periodic ? H - 1 : -1;
+        if (y < 0 || (!periodic && y + 1 >= H))
+            return 0.0;
+        return 0.5 * (q(x, y) + q(x, (y + 1) % H));
+    };
     auto idx = [W](int x, int y) { return static_cast<std::size_t>(y) * W + x; };
-    std::vector<double> bx(N, 0.0), by(N, 0.0);
-    for (int y = 0; y < H; ++y) {
-        for (int x = 0; x < W; ++x) {
-            if (out.periodic || x + 1 < W)
-                bx[idx(x, y)] = 0.5 * (p[idx(x, y)] + p[idx((x + 1) % W, y)]);
-            if (out.periodic || y + 1 < H)
-                by[idx(x, y)] = 0.5 * (q[idx(x, y)] + q[idx(x, (y + 1) % H)]);
-        }
-    }
     // f = D'b: what flows in from the step before minus what flows out.
     std::vector<Complex> f(N);
-    for (int y = 0; y < H; ++y) {
-        for (int x = 0; x < W; ++x) {
-            const double inX = x > 0 ? bx[idx(x - 1, y)] : (out.periodic ? bx[idx(W - 1, y)] : 0.0);
-            const double inY = y > 0 ? by[idx(x, y - 1)] : (out.periodic ? by[idx(x, H - 1)] : 0.0);
-            f[idx(x, y)] = inX - bx[idx(x, y)] + inY - by[idx(x, y)];
-        }
-    }
+    tbb::parallel_for(0, H, [&](int y) {
+        for (int x = 0; x < W; ++x)
+            f[idx(x, y)] = bx(x - 1, y) - bx(x, y) + by(x, y - 1) - by(x, y);
+    });
     BakeProgress progress(control, 2 * (static_cast<std::int64_t>(W) + H));
     solvePoisson(f, W, H, out.periodic, progress);
     if (progress.stopRequested())
@@ -208,25 +210,21 @@ Result<DerivedHeight> heightFromNormals(const Image& normals,
 
     // The misfit, and the relief spread over [0, 1].
     double lo = 1e300, hi = -1e300, miss = 0.0, total = 0.0;
-    for (int y = 0; y < H; ++y) {
-        for (int x = 0; x < W; ++x) {
-            const double h = f[idx(x, y)].real();
-            f[idx(x, y)] = h;
-            lo = std::min(lo, h);
-            hi = std::max(hi, h);
-        }
+    for (std::size_t i = 0; i < N; ++i) {
+        lo = std::min(lo, f[i].real());
+        hi = std::max(hi, f[i].real());
     }
     for (int y = 0; y < H; ++y) {
         for (int x = 0; x < W; ++x) {
-            if (out.periodic || x + 1 < W) {
+            if (periodic || x + 1 < W) {
                 const double d = f[idx((x + 1) % W, y)].real() - f[idx(x, y)].real();
-                miss += (d - bx[idx(x, y)]) * (d - bx[idx(x, y)]);
-                total += bx[idx(x, y)] * bx[idx(x, y)];
+                miss += (d - bx(x, y)) * (d - bx(x, y));
+                total += bx(x, y) * bx(x, y);
             }
-            if (out.periodic || y + 1 < H) {
+            if (periodic || y + 1 < H) {
                 const double d = f[idx(x, (y + 1) % H)].real() - f[idx(x, y)].real();
-                miss += (d - by[idx(x, y)]) * (d - by[idx(x, y)]);
-                total += by[idx(x, y)] * by[idx(x, y)];
+                miss += (d - by(x, y)) * (d - by(x, y));
+                total += by(x, y) * by(x, y);
             }
         }
     }

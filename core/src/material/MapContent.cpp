@@ -76,24 +76,24 @@ GreenFromCurl greenFromCurl(const Image& normals) {
     GreenFromCurl out;
     if (normals.channels < 3 || normals.width < 3 || normals.height < 3)
         return out;
-    const int W = normals.width, H = normals.height;
     // Slopes under OpenGL green: p = dh/du = -nx/nz, q = dh/dv = ny/nz (docs/conventions.md §3).
-    std::vector<double> p(static_cast<std::size_t>(W) * H), q(p.size());
-    for (int y = 0; y < H; ++y) {
-        for (int x = 0; x < W; ++x) {
-            const double nx = 2.0 * normals.at(x, y, 0) - 1.0, ny = 2.0 * normals.at(x, y, 1) - 1.0;
-            const double nz = std::max(2.0 * normals.at(x, y, 2) - 1.0, 0.05);
-            p[static_cast<std::size_t>(y) * W + x] = -nx / nz;
-            q[static_cast<std::size_t>(y) * W + x] = ny / nz;
-        }
-    }
-    // The mixed derivatives dp/dv and dq/du agree for a gradient; DirectX green flips q.
+    auto slopes = [&](int x, int y) {
+        const double nx = 2.0 * normals.at(x, y, 0) - 1.0, ny = 2.0 * normals.at(x, y, 1) - 1.0;
+        const double nz = std::max(2.0 * normals.at(x, y, 2) - 1.0, 0.05);
+        return std::pair{-nx / nz, ny / nz};
+    };
+    // The mixed derivatives dp/dv and dq/du of each 2 x 2 cell agree for a gradient; DirectX
+    // green flips q. Cells spread over the map, at most about 512 x 512 of them.
+    const int step = sampleStep(normals);
     double same = 0.0, flipped = 0.0;
-    for (int y = 0; y + 1 < H; ++y) {
-        for (int x = 0; x + 1 < W; ++x) {
-            const std::size_t i = static_cast<std::size_t>(y) * W + x;
-            const double a = (p[i + W] + p[i + W + 1]) - (p[i] + p[i + 1]);
-            const double b = (q[i + 1] + q[i + W + 1]) - (q[i] + q[i + W]);
+    for (int y = 0; y + 1 < normals.height; y += step) {
+        for (int x = 0; x + 1 < normals.width; x += step) {
+            const auto [p00, q00] = slopes(x, y);
+            const auto [p10, q10] = slopes(x + 1, y);
+            const auto [p01, q01] = slopes(x, y + 1);
+            const auto [p11, q11] = slopes(x + 1, y + 1);
+            const double a = (p01 + p11) - (p00 + p10);
+            const double b = (q10 + q11) - (q00 + q01);
             same += (a - b) * (a - b);
             flipped += (a + b) * (a + b);
         }

@@ -215,12 +215,24 @@ Result<std::vector<std::string>> folderFiles(const std::string& folder) {
     if (!fs::is_directory(folder, ec))
         return fileError(folder, "not a folder");
     std::vector<std::string> files;
+    std::vector<fs::path> folders;
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
         if (it->is_regular_file(ec))
             files.push_back(it->path().string());
+        else if (it->is_directory(ec) && !it->path().filename().string().starts_with("."))
+            folders.push_back(it->path());
     }
     if (ec)
         return fileError(folder, "cannot read the folder (" + ec.message() + ")");
+    // Downloads often keep the maps one folder down (Poly Haven's textures/ beside the .blend).
+    for (const fs::path& sub : folders) {
+        for (fs::directory_iterator it(sub, ec), end; !ec && it != end; it.increment(ec)) {
+            if (it->is_regular_file(ec))
+                files.push_back(it->path().string());
+        }
+        if (ec)
+            return fileError(sub.string(), "cannot read the folder (" + ec.message() + ")");
+    }
     std::sort(files.begin(), files.end());
     return files;
 }

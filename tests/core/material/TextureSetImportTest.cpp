@@ -5,6 +5,7 @@
 
 #include "parallax/material/TextureSetImport.h"
 
+#include "ConventionSets.h"
 #include "TextureSets.h"
 #include "parallax/io/AtomicWrite.h"
 
@@ -244,6 +245,29 @@ private slots:
                          "  rock_emission.png: tag _emission (emission), of no texture set here\n"
                          "  stone_nm.dds: an image format not read here (.dds): convert it to PNG, "
                          "TGA, TIFF or EXR"));
+    }
+
+    void mapsOneFolderDownAsDownloadsKeepThem() {
+        // Poly Haven's download: the .blend at the top, the maps in textures/.
+        QTemporaryDir dir;
+        QVERIFY(QDir(dir.path()).mkdir("textures"));
+        QVERIFY(QDir(dir.path()).mkdir(".cache"));
+        QVERIFY(writeTextFile(dir.filePath("brick_wall_001_1k.blend").toStdString(), "blend"));
+        QVERIFY(
+            writeTextFile(dir.filePath(".cache/brick_wall_001_disp_1k.png").toStdString(), "x"));
+        writeConventionSet(dir.filePath("textures").toStdString(),
+                           {{"brick_wall_001_diff_1k.jpg", Texels::Albedo},
+                            {"brick_wall_001_disp_1k.png", Texels::Height},
+                            {"brick_wall_001_nor_gl_1k.png", Texels::Normal}},
+                           4, NormalGreen::OpenGL);
+        const Result<TextureSetPlan> plan = planTextureSet(filesOf(dir), "dir");
+        QVERIFY2(plan, plan ? "" : plan.error().message.c_str());
+        QCOMPARE(plan->name, std::string("brick_wall_001"));
+        const Result<ImportedSet> set = importTextureSet(*plan);
+        QVERIFY(set);
+        QVERIFY(set->material.maps.height.ends_with("/textures/brick_wall_001_disp_1k.png"));
+        QVERIFY(summaryOf(*set).find("Ignored: brick_wall_001_1k.blend (not an image file)") !=
+                std::string::npos);
     }
 
     void aNormalOnlySetGetsADerivedHeightOnRequest() {

@@ -48,7 +48,8 @@ std::vector<std::string> textureSetNames(const std::vector<std::string>& files);
 Result<TextureSetPlan> planTextureSet(const std::vector<std::string>& files,
                                       const std::string& source, const std::string& set = {});
 
-// The regular files of a folder, sorted. Errors: not a folder, unreadable.
+// The regular files of a folder and of the folders in it (one level, not hidden ones: downloads
+// keep maps in textures/ beside a .blend), sorted. Errors: not a folder, unreadable.
 Result<std::vector<std::string>> folderFiles(const std::string& folder);
 
 } // namespace px
