@@ -213,7 +213,7 @@ DocumentState importedState(ImportedSet set) {
     set.assets.albedo = set.assets.albedo.empty() ? Image{} : toRgb(std::move(set.assets.albedo));
     // A height map derived from the normal map has no file yet: saved with the material.
     state.setUnsaved(MapKind::Height,
-                     !set.assets.height.empty() && set.material.maps.height.empty());
+                     !set.assets.height.empty() && state.material.maps.height.empty());
     state.assets = std::make_shared<const MaterialAssets>(std::move(set.assets));
     return state;
 }
