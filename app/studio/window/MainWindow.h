@@ -140,7 +140,7 @@ private:
     bool importSet(const std::vector<std::string>& files, const QString& source, QString set);
     void showImportSummary(const ImportedSet& set);
     void offerDerivedHeight(ImportedSet set);
-    void adoptImported(ImportedSet set);
+    void adoptImported(const ImportedSet& set);
     bool maybeSave(); // false: the user cancelled
     bool save();
     bool saveAs();

@@ -236,7 +236,7 @@ bool MainWindow::importSet(const std::vector<std::string>& files, const QString&
         offerDerivedHeight(std::move(*imported));
         return false; // imported once the user says how (offerDerivedHeight)
     }
-    adoptImported(std::move(*imported));
+    adoptImported(*imported);
     return true;
 }
 
@@ -268,12 +268,12 @@ void MainWindow::offerDerivedHeight(ImportedSet set) {
                             QString::fromStdString(derived.error().message));
             return;
         }
-        adoptImported(std::move(*derived));
+        adoptImported(*derived);
     });
     box->open();
 }
 
-void MainWindow::adoptImported(ImportedSet set) {
+void MainWindow::adoptImported(const ImportedSet& set) {
     DocumentState state = importedState(set);
     state.views = m_document->state().views; // the viewports' techniques are not the material's
     m_document->reset(std::move(state), {});

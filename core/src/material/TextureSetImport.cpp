@@ -269,7 +269,7 @@ void Importer::readRelief() {
         if (auto it = m_images.find(m_normal->path); it != m_images.end())
             normals = &it->second;
     }
-    if (m_heightInAlpha) {
+    if (m_heightInAlpha && m_normal) { // the alpha is the normal map's
         m.maps.height = absolutePath(m_normal->path);
         m.heightChannel = HeightChannel::Alpha;
         m_out.relief = m_alphaReading;

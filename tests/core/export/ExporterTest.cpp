@@ -31,6 +31,7 @@ private slots:
     void packageBakesMissingConeMapRoundingDown();
     void packageNormalGreenConverted();
     void packagePacksSurfaceMapForTheShader();
+    void packedChannelsExportOneMapAFileAndDerivedHeightIsNoted();
     void gltfDescribesPlaneMaterialAndExtras();
     void gltfExtrasAlwaysAValidMaterial();
     void godotMaterialResource();
@@ -244,6 +245,28 @@ void ExporterTest::packagePacksSurfaceMapForTheShader() {
     QVERIFY(written.contains("bricks_orm.png"));       // for the shader's surface map
     QVERIFY(readTextFile(path("out/bricks.frag"))->find("pxOrmMap") != std::string::npos);
     QVERIFY(std::abs(read("out/bricks_orm.png").at(1, 1, 1) - 0.3f) < 1.0f / 255);
+}
+
+void ExporterTest::packedChannelsExportOneMapAFileAndDerivedHeightIsNoted() {
+    // An imported Unity mask map: roughness = 1 - alpha, occlusion from green.
+    write("src/bricks_mask.png", constant(32, 16, {0.2f, 0.5f, 0.8f, 0.3f}), PixelFormat::UInt8);
+    m_material.lighting = LightingModel::MetallicRoughness;
+    m_material.maps.roughness = m_material.maps.ao = "bricks_mask.png";
+    m_material.surface.roughness = HeightChannel::Alpha;
+    m_material.surface.gloss = true;
+    m_material.surface.ao = HeightChannel::Green;
+    m_material.heightDerivedFrom = "bricks_normal.png";
+    Result<ExportResult> result = run(ExportFormat::Package);
+    QVERIFY2(result, result ? "" : result.error().message.c_str());
+    QVERIFY(std::abs(read("out/bricks_roughness.png").at(1, 1) - 0.7f) < 1.0f / 255);
+    QVERIFY(std::abs(read("out/bricks_ao.png").at(1, 1) - 0.5f) < 1.0f / 255);
+    Result<Material> loaded = loadMaterial(path("out/bricks.json"));
+    QVERIFY(loaded && loaded->surface == SurfaceChannels{});
+    QCOMPARE(loaded->heightDerivedFrom, std::string("bricks_normal.png"));
+    bool noted = false;
+    for (const std::string& note : result->notes)
+        noted |= note.find("derived from the normal map bricks_normal.png") != std::string::npos;
+    QVERIFY(noted);
 }
 
 void ExporterTest::gltfDescribesPlaneMaterialAndExtras() {

@@ -61,6 +61,8 @@ Material everyFieldChanged() {
     m.metallic = 1.0f;
     m.specular = 0.75f;
     m.shininess = 64.0f;
+    m.surface = {HeightChannel::Green, HeightChannel::Alpha, HeightChannel::Blue, true};
+    m.heightDerivedFrom = "rock_nrm.png";
     return m;
 }
 
@@ -94,6 +96,8 @@ void compareMaterials(const Material& a, const Material& b) {
     QCOMPARE(a.metallic, b.metallic);
     QCOMPARE(a.specular, b.specular);
     QCOMPARE(a.shininess, b.shininess);
+    QVERIFY(a.surface == b.surface);
+    QCOMPARE(a.heightDerivedFrom, b.heightDerivedFrom);
 }
 
 const char* kHeader = R"("format": "parallax-studio-material", "version": 1)";
@@ -130,6 +134,9 @@ void MaterialFileTest::floatsWrittenShort() {
     const std::string json = materialToJson(m);
     QVERIFY2(json.find("\"scale\": 0.05") != std::string::npos, json.c_str());
     QVERIFY2(json.find("0.0500000") == std::string::npos, json.c_str());
+    // The import's packed channels and derived height are written only when set.
+    QVERIFY2(json.find("surface") == std::string::npos, json.c_str());
+    QVERIFY2(json.find("derivedFrom") == std::string::npos, json.c_str());
     QVERIFY(json.rfind("{\n  \"format\": \"parallax-studio-material\",\n  \"version\": 1,", 0) ==
             0);
 }
@@ -197,6 +204,12 @@ void MaterialFileTest::problems_data() {
         << body(R"("technique": {"name": "pom", "maxLayer": 9})")
         << "m.json: /technique/maxLayer: unknown key (known here: name, minLayers,";
     QTest::newRow("slash in key") << body(R"("a/b~c": 1)") << "m.json: /a~1b~0c: unknown key";
+    QTest::newRow("surface channel")
+        << body(R"("surface": {"roughnessChannel": "purple"})")
+        << R"(m.json: /surface/roughnessChannel: expected one of "red", "green", "blue", "alpha", "luminance", got "purple")";
+    QTest::newRow("surface gloss")
+        << body(R"("surface": {"roughnessIsGloss": 1})")
+        << "m.json: /surface/roughnessIsGloss: expected true or false, got 1";
     QTest::newRow("name type") << body(R"("name": 5)") << "m.json: /name: expected a string, got 5";
     QTest::newRow("name empty") << body(R"("name": "")")
                                 << "m.json: /name: expected a non-empty name";
