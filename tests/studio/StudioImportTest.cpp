@@ -192,6 +192,16 @@ private slots:
         QVERIFY(w->document()->state().hasMap(MapKind::Normal));
         // A loaded normal map is used.
         QCOMPARE(w->document()->material().normalSource, NormalSource::Map);
+        // A packed map alone is not loaded as a height map.
+        const std::string packed = dir.filePath("rock_arm.png").toStdString();
+        QVERIFY(
+            QFile::copy(QString::fromStdString(set.albedoFile), QString::fromStdString(packed)));
+        const int steps = w->document()->undoStack()->count();
+        QVERIFY(dropFiles(w.get(), {QString::fromStdString(packed)}));
+        QVERIFY2(w->lastProblem().contains("rock_arm.png: ORM map by its name; import its set's "
+                                           "folder to use it."),
+                 qPrintable(w->lastProblem()));
+        QCOMPARE(w->document()->undoStack()->count(), steps);
     }
 
     void nameFieldRenamesUndoably() {

@@ -8,6 +8,7 @@
 #include "panels/ExportDialog.h"
 #include "panels/ImportSummaryDialog.h"
 #include "panels/MaterialPanel.h"
+#include "parallax/material/MapFileName.h"
 #include "parallax/mesh/MeshLoader.h"
 #include "preview/ViewportGrid.h"
 #include "window/MainWindow.h"
@@ -193,6 +194,18 @@ bool MainWindow::importFiles(const QStringList& paths, const QString& set) {
     // suffix; with no known suffix, the height map: that is what this editor is about.
     if (paths.size() == 1) {
         const std::optional<SuffixMatch> match = mapKindFromFileName(files.front());
+        const NameReading name = readMapFileName(files.front()).front();
+        if (!match && name.tag && !name.glued) {
+            // Packed, gloss or unused maps are read with their set, never as a height map.
+            const std::string_view what =
+                name.tag->what.empty() ? roleName(name.tag->role) : name.tag->what;
+            showProblem(
+                tr("Not a map on its own"),
+                tr("%1: %2 by its name; import its set's folder to use it.")
+                    .arg(QFileInfo(paths.front()).fileName(),
+                         QString::fromUtf8(what.data(), static_cast<qsizetype>(what.size()))));
+            return false;
+        }
         return loadMap(match ? match->kind : MapKind::Height, paths.front());
     }
     return importSet(files, paths.size() == 1 ? paths.front() : tr("the dropped files"), set);
