@@ -150,6 +150,8 @@ std::vector<NameReading> readMapFileName(const std::string& fileName) {
         auto [first, tag] = tagEndingAt(words, end);
         if (!tag && end > 1 && isGluedBitDepth(words[end - 1]))
             std::tie(first, tag) = tagEndingAt(words, end - 1);
+        if (!tag && end > 1 && words[end - 1].text == "map") // "_diffuse_map", Unity's "_BumpMap"
+            std::tie(first, tag) = tagEndingAt(words, end - 1);
         if (tag) {
             tagged(first, tag);
         } else {

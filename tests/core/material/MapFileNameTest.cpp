@@ -63,6 +63,15 @@ private slots:
         row("T_Wall_ORM.png", "T_Wall", orm);
         row("T_Wall_D.png", "T_Wall", albedo);
         row("Wall_BentNormal.png", "Wall", unused);
+        // Unity's property names, and "map" after a tag.
+        row("Rock_MainTex.png", "Rock", albedo);
+        row("Rock_BumpMap.png", "Rock", bump);
+        row("Rock_ParallaxMap.png", "Rock", height);
+        row("Rock_OcclusionMap.png", "Rock", ao);
+        row("Rock_MetallicGlossMap.png", "Rock", static_cast<int>(MapRole::MetallicSmoothness));
+        row("rock_diffuse_map.jpg", "rock", albedo);
+        row("rock_mask_map.png", "rock", static_cast<int>(MapRole::MaskMap));
+        row("treasure_map.png", "treasure_map", -1);
         // Poliigon.
         row("Planks_COL_VAR1_3K.jpg", "Planks", albedo);
         row("Planks_DISP16_3K.png", "Planks", height);
