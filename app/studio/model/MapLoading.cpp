@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 namespace px::studio {
@@ -135,10 +136,23 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
         HeightLoadOptions options;
         options.channel = state.material.heightChannel;
         options.invert = depth;
-        Result<HeightField> field = loadHeightField(path, options);
-        if (!field)
-            return field.error();
-        assets.height = std::move(*field);
+        // The same file read again keeps the range the material has for it, where it still fits.
+        if (!state.material.maps.height.empty() &&
+            absolutePath(path) == absolutePath(state.material.maps.height))
+            options.range = state.material.heightRange;
+        Result<FittedHeight> fitted = loadHeightFieldFitted(path, options);
+        if (!fitted)
+            return fitted.error();
+        assets.height = std::move(fitted->field);
+        next.material.heightRange = fitted->range;
+        if (fitted->range && fitted->range != state.material.heightRange) {
+            std::ostringstream note;
+            note << std::filesystem::path(path).filename().string() << " holds heights from "
+                 << fitted->range->lo << " to " << fitted->range->hi
+                 << " (a float map in its own units): read as stored, that range as 0 to 1; "
+                    "the material records it.";
+            loaded.notes.push_back(note.str());
+        }
         next.material.heightIsDepth = depth;
         next.material.heightDerivedFrom.clear();
         dropDerivedMaps(next, assets, loaded.notes);
@@ -173,6 +187,15 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
         if (!cone)
             return cone.error();
         (kind == MapKind::Cone ? assets.cone : assets.relaxedCone) = std::move(*cone);
+        break;
+    }
+    case MapKind::Specular: {
+        Result<Image> image = readMapImage(path, 1, "specular map");
+        if (!image)
+            return image.error();
+        assets.specular = std::move(*image);
+        loaded.notes.push_back("The specular map is kept for the exports that read one (glTF, "
+                               "Unreal); the preview does not draw it.");
         break;
     }
     case MapKind::Ao:

@@ -26,6 +26,8 @@ std::string_view mapKey(MapKind kind) {
         return "roughness";
     case MapKind::Metallic:
         return "metallic";
+    case MapKind::Specular:
+        return "specular";
     }
     return "";
 }
@@ -48,6 +50,8 @@ std::string_view mapTitle(MapKind kind) {
         return "Roughness";
     case MapKind::Metallic:
         return "Metallic";
+    case MapKind::Specular:
+        return "Specular";
     }
     return "";
 }
@@ -70,6 +74,8 @@ std::string& mapPath(MaterialMaps& maps, MapKind kind) {
         return maps.roughness;
     case MapKind::Metallic:
         return maps.metallic;
+    case MapKind::Specular:
+        return maps.specular;
     }
     return maps.albedo;
 }
@@ -107,6 +113,8 @@ std::optional<MapKind> kindOf(MapRole role) {
         return MapKind::Cone;
     case MapRole::RelaxedCone:
         return MapKind::RelaxedCone;
+    case MapRole::Specular:
+        return MapKind::Specular;
     default:
         return std::nullopt; // packed, inverted or unused: only a set's import reads them
     }

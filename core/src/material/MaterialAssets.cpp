@@ -19,6 +19,7 @@ MapSet mapsPresent(const MaterialMaps& maps) {
     set.ao = !maps.ao.empty();
     set.roughness = !maps.roughness.empty();
     set.metallic = !maps.metallic.empty();
+    set.specular = !maps.specular.empty();
     return set;
 }
 
@@ -151,6 +152,7 @@ Result<MaterialAssets> loadMaterialAssets(const Material& m, const std::string& 
             load.invert = m.heightIsDepth;
             load.allowLarge = options.allowLarge;
             load.normalize = options.normalize;
+            load.range = m.heightRange;
             Result<HeightField> field = loadHeightField(file(m.maps.height), load);
             if (field)
                 assets.height = std::move(*field);
@@ -176,6 +178,8 @@ Result<MaterialAssets> loadMaterialAssets(const Material& m, const std::string& 
     if (which.metallic && !m.maps.metallic.empty())
         assets.metallic = loadSurface(file(m.maps.metallic), m.surface.metallic, false,
                                       "metallic map", options, problems);
+    if (which.specular && !m.maps.specular.empty())
+        assets.specular = loadImage(file(m.maps.specular), 1, "specular map", options, problems);
 
     if (!problems.text.empty())
         return Error{problems.text};

@@ -11,11 +11,11 @@
 
 namespace px {
 
-enum class MapKind { Albedo, Height, Normal, Cone, RelaxedCone, Ao, Roughness, Metallic };
+enum class MapKind { Albedo, Height, Normal, Cone, RelaxedCone, Ao, Roughness, Metallic, Specular };
 
-inline constexpr std::array<MapKind, 8> kAllMapKinds{
-    MapKind::Albedo,      MapKind::Height, MapKind::Normal,    MapKind::Cone,
-    MapKind::RelaxedCone, MapKind::Ao,     MapKind::Roughness, MapKind::Metallic};
+inline constexpr std::array<MapKind, 9> kAllMapKinds{
+    MapKind::Albedo, MapKind::Height,    MapKind::Normal,   MapKind::Cone,    MapKind::RelaxedCone,
+    MapKind::Ao,     MapKind::Roughness, MapKind::Metallic, MapKind::Specular};
 
 std::string_view mapKey(MapKind kind);   // "albedo", "relaxed-cone": file names and settings
 std::string_view mapTitle(MapKind kind); // "Relaxed cone map": for people

@@ -39,6 +39,10 @@ struct MaterialMaps {
     std::string ao;
     std::string roughness;
     std::string metallic;
+    // Specular level, as stored: scales the specular reflection of non-metals (white = the full,
+    // default reflection, black = none); a coloured file tints it. Kept for the engines that
+    // read one (docs/export.md); the preview does not.
+    std::string specular;
 };
 
 // Technique "auto": no technique of its own; resolved where the material is rendered or exported
@@ -73,6 +77,9 @@ struct Material {
     SurfaceChannels surface;
     HeightChannel heightChannel = HeightChannel::Red;
     bool heightIsDepth = false; // white = deep: loaded inverted
+    // The file values for h = 0 and h = 1 (a float height map in its own units); unset: values as
+    // stored, within [0, 1]. The height scale is the depth of the whole range either way.
+    std::optional<HeightRange> heightRange;
     // Set when the height map was made by integrating this normal map (its file name): a guess at
     // the relief, not a measured one; exports say so.
     std::string heightDerivedFrom;
