@@ -48,6 +48,13 @@ std::string shortNumber(double value) {
     return text;
 }
 
+// A file value as the user would type it back: up to 7 significant digits.
+std::string fileValue(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.7g", value);
+    return text;
+}
+
 const char* greenName(NormalGreen green) {
     return green == NormalGreen::OpenGL ? "OpenGL (Y+)" : "DirectX (Y-)";
 }
@@ -280,16 +287,24 @@ void Importer::readRelief() {
         m_out.relief = reliefByName(m_depthByName, m_height->path);
         HeightLoadOptions raw;
         raw.allowLarge = m_options.allowLarge;
-        raw.normalize = m_options.normalize;
-        Result<HeightField> field = loadHeightField(m_height->path, raw);
-        if (!field) {
-            m_problems += (m_problems.empty() ? "" : "\n") + field.error().message;
+        // A float map in its own units (signed, or any range) is read by its range, recorded.
+        Result<FittedHeight> fitted = loadHeightFieldFitted(m_height->path, raw);
+        if (!fitted) {
+            m_problems += (m_problems.empty() ? "" : "\n") + fitted.error().message;
             return;
         }
+        m.heightRange = fitted->range;
+        if (m.heightRange)
+            m_out.notes.push_back(fileName(m_height->path) + " holds heights from " +
+                                  fileValue(m.heightRange->lo) + " to " +
+                                  fileValue(m.heightRange->hi) +
+                                  " (a float map in its own units): read as stored, that range "
+                                  "as 0 to 1; the material records it, and the height scale is "
+                                  "the depth of the whole range.");
         // Grey files named after the set are albedo unless a normal map says they are relief.
         if (normals) {
             Result<ReliefReading> reading =
-                px::readRelief(*field, *normals, m.wrap, m_depthByName, m_normal->path);
+                px::readRelief(fitted->field, *normals, m.wrap, m_depthByName, m_normal->path);
             if (reading)
                 m_out.relief = std::move(*reading);
         }
@@ -427,6 +442,11 @@ void Importer::chooseSurface() {
         m_out.notes.push_back("Lighting: metallic-roughness (the set has roughness or metallic "
                               "maps).");
     }
+    // Specular: no map of the preview's, but engines read one (glTF, Unreal): kept for export.
+    if (const SetFile* f = pick(named(MapRole::Specular), nullptr)) {
+        use(*f, "specular map", f->why + "; kept for the exports that read one, not drawn here");
+        m.maps.specular = absolutePath(f->path);
+    }
     for (MapRole cone : {MapRole::Cone, MapRole::RelaxedCone}) {
         if (const SetFile* f = pick(named(cone), nullptr)) {
             use(*f, std::string(roleName(cone)), f->why);
@@ -440,10 +460,7 @@ void Importer::reportTheRest() {
         ImportedFile& r = report(f);
         if (r.used || !r.why.empty())
             continue;
-        if (f.role == MapRole::Specular)
-            r.why = "a specular map (" + f.why +
-                    "): recognised; a metallic-roughness material has no specular map";
-        else if (f.role == MapRole::Unused)
+        if (f.role == MapRole::Unused)
             r.why = "recognised (" + f.why + "), not a map a parallax material uses";
         else
             r.why = "not used (" + f.why + ")";
@@ -457,6 +474,7 @@ Result<ImportedSet> Importer::run(const Material& base) {
     m.maps = {};
     m.surface = {};
     m.heightChannel = HeightChannel::Red;
+    m.heightRange.reset();
     m.heightDerivedFrom.clear();
     m_out.plan = m_plan;
     chooseNormal();
@@ -515,6 +533,7 @@ Status deriveHeight(ImportedSet& set, const BakeControl& control) {
     m.maps.height.clear(); // made here: no file until the material is saved
     m.heightChannel = HeightChannel::Red;
     m.heightIsDepth = false;
+    m.heightRange.reset();
     m.heightScale = derived->heightScale;
     m.heightDerivedFrom = normal;
     set.assets.height = std::move(derived->height);

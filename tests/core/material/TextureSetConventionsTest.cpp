@@ -32,6 +32,7 @@ struct Convention {
     bool depth = false;
     std::string normal, albedo;
     Channel roughness, ao, metallic;
+    std::string specular = {}; // kept for the engines that read one
 };
 
 std::string named(const std::string& pattern, const std::string& stem) {
@@ -64,6 +65,7 @@ std::vector<Convention> conventions() {
                  {"{s}_rough_1k.jpg", R},
                  {"{s}_arm_1k.png", R},
                  {"{s}_arm_1k.png", B}});
+    c.back().specular = "{s}_spec_1k.png";
     c.push_back({"ambientcg",
                  {{"{s}_1K-PNG_Color.png", T::Albedo},
                   {"{s}_1K-PNG_NormalGL.png", T::Normal},
@@ -166,6 +168,7 @@ std::vector<Convention> conventions() {
                  {"{s}_ddna.png", A, true},
                  {},
                  {}});
+    c.back().specular = "{s}_spec.png";
     c.push_back(
         {"tesseract-nm-height-alpha",
          {{"{s}.png", T::Albedo}, {"{s}_nm.png", T::NormalHeightAlpha}, {"{s}_s.png", T::Grey}},
@@ -178,6 +181,7 @@ std::vector<Convention> conventions() {
          {},
          {},
          {}});
+    c.back().specular = "{s}_s.png";
     c.push_back({"darkplaces-norm-gloss-glow",
                  {{"{s}.tga", T::Albedo},
                   {"{s}_norm.tga", T::NormalHeightAlpha},
@@ -217,6 +221,7 @@ std::vector<Convention> conventions() {
                  {},
                  {},
                  {}});
+    c.back().specular = "{s}_s.png";
     c.push_back({"glued-tags",
                  {{"{s}1.jpg", T::Albedo}, {"{s}1z.png", T::Height}, {"{s}1n.png", T::Normal}},
                  std::nullopt,
@@ -267,6 +272,7 @@ std::vector<Convention> conventions() {
                  {"{s}_GLOSS_3K.jpg", R, true},
                  {"{s}_AO_3K.jpg", R},
                  {}});
+    c.back().specular = "{s}_REFL_3K.jpg";
     c.push_back({"z-n-plain-albedo",
                  {{"{s}.png", T::Albedo}, {"{s}_z.png", T::Height}, {"{s}_n.png", T::Normal}},
                  std::nullopt,
@@ -403,6 +409,8 @@ private slots:
         QVERIFY2(endsWith(m.maps.roughness, named(c.roughness.file, stem)), why);
         QVERIFY2(endsWith(m.maps.ao, named(c.ao.file, stem)), why);
         QVERIFY2(endsWith(m.maps.metallic, named(c.metallic.file, stem)), why);
+        QVERIFY2(endsWith(m.maps.specular, named(c.specular, stem)), why);
+        QVERIFY2(set->assets.specular.empty() == c.specular.empty(), why);
         if (!c.roughness.file.empty()) {
             QVERIFY2(m.surface.roughness == c.roughness.channel &&
                          m.surface.gloss == c.roughness.gloss,

@@ -7,7 +7,9 @@
 
 #include "ConventionSets.h"
 #include "TextureSets.h"
+#include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/material/MaterialFile.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -313,6 +315,101 @@ private slots:
         QVERIFY2(text.find("derived from the normal map tiles_normal.png") != std::string::npos,
                  text.c_str());
         QVERIFY(!deriveHeight(*set)); // once
+    }
+
+    // Float height maps in their makers' units (signed, centimetres, tiny, far from zero; height
+    // or depth; either green): read as stored by their own range, which the material records and
+    // which reads them back the same through the material file; the relief is told as for a PNG.
+    void aFloatMapInItsOwnUnitsIsReadByItsRange_data() {
+        QTest::addColumn<float>("offset");
+        QTest::addColumn<float>("scale");
+        QTest::addColumn<bool>("depth");
+        QTest::addColumn<unsigned>("seed");
+        for (unsigned seed : {4u, 8u, 12u}) {
+            const float f = 0.5f + 0.25f * static_cast<float>(seed % 5);
+            QTest::addRow("signed-seed%u", seed) << -0.7f * f << 1.9f * f << false << seed;
+            QTest::addRow("centimetres-depth-seed%u", seed) << 0.0f << 350.0f * f << true << seed;
+            QTest::addRow("tiny-signed-seed%u", seed) << -3e-5f * f << 6e-5f * f << false << seed;
+            QTest::addRow("far-from-zero-seed%u", seed) << 1000.0f * f << 0.5f << true << seed;
+        }
+    }
+    void aFloatMapInItsOwnUnitsIsReadByItsRange() {
+        QFETCH(float, offset);
+        QFETCH(float, scale);
+        QFETCH(bool, depth);
+        QFETCH(unsigned, seed);
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        spec.stem = "bake";
+        spec.seed = seed;
+        spec.depth = depth;
+        spec.green = seed % 8 ? NormalGreen::OpenGL : NormalGreen::DirectX;
+        spec.fileOffset = offset;
+        spec.fileScale = scale;
+        const WrittenSet written = writeTextureSet(dir.path().toStdString(), spec);
+        const Result<ImportedSet> set = importTextureSet(*planTextureSet(filesOf(dir), "dir"));
+        QVERIFY2(set, set ? "" : set.error().message.c_str());
+        const Material& m = set->material;
+        QVERIFY(m.heightRange);
+        QCOMPARE(m.heightRange->lo, written.file.minHeight());
+        QCOMPARE(m.heightRange->hi, written.file.maxHeight());
+        QCOMPARE(m.heightIsDepth, depth);
+        QCOMPARE(m.normalGreen, spec.green);
+        QVERIFY(set->relief.fromData);
+        const std::string text = summaryOf(*set);
+        QVERIFY2(text.find("bake_disp.exr holds heights from ") != std::string::npos, text.c_str());
+        // White = high over [0, 1]: the written relief spread over its range, to the float file's
+        // precision at its magnitude.
+        const float lo = written.height.minHeight(), hi = written.height.maxHeight();
+        const float magnitude = std::max(std::abs(m.heightRange->lo), std::abs(m.heightRange->hi));
+        const double tolerance = 2.0 * (std::nextafter(magnitude, INFINITY) - magnitude) /
+                                     (double(m.heightRange->hi) - m.heightRange->lo) +
+                                 1e-6;
+        double worst = 0.0;
+        for (std::size_t i = 0; i < written.height.texels.size(); ++i)
+            worst = std::max(worst, std::abs(double(set->assets.height.texels[i]) -
+                                             (written.height.texels[i] - lo) / double(hi - lo)));
+        QVERIFY2(worst <= tolerance, qPrintable(QString("%1 > %2").arg(worst).arg(tolerance)));
+
+        // Through the material file: the same heights, texel for texel.
+        const std::string file = dir.filePath("bake.json").toStdString();
+        QVERIFY(saveMaterial(m, file));
+        const Result<Material> loaded = loadMaterial(file);
+        QVERIFY(loaded && loaded->heightRange == m.heightRange);
+        MapSet height;
+        height.height = true;
+        const Result<MaterialAssets> assets = loadMaterialAssets(*loaded, file, height);
+        QVERIFY2(assets, assets ? "" : assets.error().message.c_str());
+        for (std::size_t i = 0; i < written.height.texels.size(); ++i)
+            QCOMPARE(assets->height.texels[i], set->assets.height.texels[i]);
+    }
+
+    // A float map of one value outside [0, 1] has no range; one with NaN or infinity is refused:
+    // each names the file, and nothing is clamped.
+    void aFloatMapWithoutARangeOrWithNaNIsRefusedNamingIt() {
+        for (const float bad : {7.25f, std::nanf(""), -INFINITY}) {
+            QTemporaryDir dir;
+            TextureSetSpec spec;
+            spec.fileScale = 1.0f;
+            const WrittenSet written = writeTextureSet(dir.path().toStdString(), spec);
+            Image image = written.file.toImage();
+            if (std::isnan(bad) || std::isinf(bad)) {
+                image.at(5, 9, 0) = bad;
+            } else {
+                for (float& v : image.pixels)
+                    v = bad;
+            }
+            ImageWriteOptions write;
+            write.format = PixelFormat::Float;
+            QVERIFY(writeImage(written.heightFile, image, write));
+            const Result<ImportedSet> set = importTextureSet(*planTextureSet(filesOf(dir), "dir"));
+            QVERIFY(!set);
+            const std::string& message = set.error().message;
+            QVERIFY2(message.starts_with(written.heightFile + ": "), message.c_str());
+            QVERIFY2(message.find(std::isfinite(bad) ? "every height texel holds 7.25"
+                                                     : "NaN or infinite") != std::string::npos,
+                     message.c_str());
+        }
     }
 };
 

@@ -25,7 +25,7 @@ enum class MapRole {
     Orm,                // R occlusion, G roughness, B metallic (Unreal ORM, Poly Haven ARM)
     MaskMap,            // Unity HDRP: R metallic, G occlusion, B detail mask, A smoothness
     MetallicSmoothness, // Unity Standard: R metallic, A smoothness
-    Specular,           // recognised and reported; a metallic-roughness material has no slot
+    Specular,           // the material's specular map: kept for the engines that read one
     Cone,
     RelaxedCone,
     Unused, // known maps a parallax material does not use: emission, opacity, cavity, ...
