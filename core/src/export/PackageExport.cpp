@@ -67,6 +67,7 @@ Status writePackage(ExportJob& job) {
     out.maps = {};
     out.heightChannel = HeightChannel::Red;
     out.heightIsDepth = false; // the height map is written white = high
+    out.heightRange.reset();   // ... and from 0 to 1
     out.normalGreen = job.options.packageGreen;
     std::vector<std::pair<std::string, std::string>> files;
     auto add = [&](const std::string& name, const std::string& what) {
@@ -128,6 +129,10 @@ Status writePackage(ExportJob& job) {
         *linear[i].second = name;
         add(name, std::string(linearNames[i]) + ", 8-bit linear");
     }
+
+    if (!m.maps.specular.empty())
+        job.result.notes.push_back("specular map not in the package: its shader does not read "
+                                   "one (the glTF and Unreal exports carry it)");
 
     const std::string materialName = job.stem + ".json";
     if (Status s = job.text(materialName, materialToJson(out)); !s)
