@@ -7,6 +7,7 @@
 #include <cctype>
 #include <filesystem>
 #include <map>
+#include <set>
 
 namespace px {
 
@@ -74,21 +75,21 @@ Grouping group(const std::vector<std::string>& files) {
             e.readings = readMapFileName(file);
         g.entries.push_back(std::move(e));
     }
-    // How often each stem is spelled by a firm reading (a separated tag, or no tag) or a glued
-    // one: a glued tag needs another file with its stem.
-    std::map<std::string, int> firm, glued;
+    // The names that spell each stem by a firm reading (a separated tag, or no tag) or a glued
+    // one: a glued tag needs another file with its stem. One name in two formats (stones.png and
+    // stones.jpg, a download's BMP and PNG) is one file, not a sibling of itself.
+    std::map<std::string, std::set<std::string>> firm, glued;
     for (const Entry& e : g.entries) {
-        for (const NameReading& r : e.readings) {
-            const std::string key = lower(setOf(r, e.path));
-            ++(r.glued ? glued : firm)[key];
-        }
+        const std::string fileName = lower(fs::path(e.path).stem().string());
+        for (const NameReading& r : e.readings)
+            (r.glued ? glued : firm)[lower(setOf(r, e.path))].insert(fileName);
     }
     for (Entry& e : g.entries) {
         for (const NameReading& r : e.readings) {
             if (r.tag && r.glued) {
-                // Its own plain reading spells another stem, so any firm count is a sibling's.
+                // Its own plain reading spells another stem, so any firm name is a sibling's.
                 const std::string key = lower(setOf(r, e.path));
-                if (firm[key] == 0 && glued[key] < 2)
+                if (firm[key].empty() && glued[key].size() < 2)
                     continue;
             }
             e.chosen = &r;

@@ -185,6 +185,33 @@ private slots:
                  QString("dir: holds no texture set named 'stones' (it holds bricks2, toy_box)"));
     }
 
+    // A glued tag needs a sibling; the same name in another format (a download's BMP beside its
+    // PNG) is not one: stones.png and stones.jpg are the albedo of "stones", not the specular map
+    // of a second set "stone", and brickn.png with brickn.tga alone make no set.
+    void oneNameInTwoFormatsIsNotItsOwnSibling() {
+        QTemporaryDir dir;
+        for (const char* name : {"stones_height.png", "stones.png", "stones.jpg"})
+            QVERIFY(writeTextFile(dir.filePath(name).toStdString(), "names only"));
+        const std::vector<std::string> files = filesOf(dir);
+        QCOMPARE(textureSetNames(files), (std::vector<std::string>{"stones"}));
+        const Result<TextureSetPlan> plan = planTextureSet(files, "dir");
+        QVERIFY2(plan, plan ? "" : plan.error().message.c_str());
+        QCOMPARE(plan->files.size(), std::size_t(3));
+        QVERIFY(plan->ignored.empty());
+
+        QTemporaryDir lone;
+        for (const char* name : {"brickn.png", "brickn.tga"})
+            QVERIFY(writeTextFile(lone.filePath(name).toStdString(), "names only"));
+        QVERIFY(textureSetNames(filesOf(lone)).empty());
+        const Result<TextureSetPlan> none = planTextureSet(filesOf(lone), "lone");
+        QVERIFY(!none);
+        QVERIFY2(none.error().message.find("brickn.png: no map tag") != std::string::npos,
+                 none.error().message.c_str());
+
+        QVERIFY(writeTextFile(lone.filePath("brickz.png").toStdString(), "names only"));
+        QCOMPARE(textureSetNames(filesOf(lone)), (std::vector<std::string>{"brick"}));
+    }
+
     void duplicatesAreListedAndTheSummaryNamesEveryFile() {
         QTemporaryDir dir;
         TextureSetSpec spec;
