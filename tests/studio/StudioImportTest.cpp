@@ -128,6 +128,48 @@ private slots:
         QVERIFY(!summary->isVisible());
     }
 
+    // As an artist meets it: Import Folder in an interactive session, on a set whose height is
+    // named _hgt (a name the old import did not know) beside an open material. A new material,
+    // nothing of the open one kept, the report on screen, and Enter accepts the data's reading.
+    void importFolderShowsTheReportAndEnterAccepts() {
+        auto w = makeWindow(1, 64, true);
+        QVERIFY(w);
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        spec.stem = "stone";
+        spec.heightSuffix = "_hgt";
+        spec.depth = true;
+        spec.green = NormalGreen::DirectX;
+        spec.seed = 4;
+        spec.size = 48;
+        const auto written = writeTextureSet(dir.path().toStdString(), spec);
+        const std::string openName = w->document()->material().name;
+        const auto openAssets = w->document()->state().assets;
+
+        QVERIFY(w->importFolder(dir.path()));
+        const DocumentState& s = w->document()->state();
+        QCOMPARE(QString::fromStdString(s.material.name), QString("stone"));
+        QVERIFY(s.material.name != openName);
+        QVERIFY(s.assets != openAssets);
+        QCOMPARE(s.assets->height.width, spec.size); // the set's height, not the open one's
+        QCOMPARE(QString::fromStdString(s.material.maps.height),
+                 QString::fromStdString(written.heightFile));
+        QVERIFY(s.material.heightIsDepth);
+        QCOMPARE(s.material.normalGreen, NormalGreen::DirectX);
+        QCOMPARE(w->document()->undoStack()->count(), 0); // a document of its own
+
+        ImportSummaryDialog* summary = w->importSummary();
+        QVERIFY(summary);
+        QVERIFY(QTest::qWaitForWindowExposed(summary)); // shown without being asked
+        for (const char* file : {"stone_hgt.png", "stone_normal.png", "stone_albedo.png"})
+            QVERIFY2(summary->text().contains(file), qPrintable(summary->text()));
+        QTest::keyClick(summary, Qt::Key_Return);
+        QVERIFY(!w->importSummary() || !w->importSummary()->isVisible()); // accepted, closed
+        QVERIFY(w->document()->state().material.heightIsDepth);
+        QCOMPARE(w->document()->state().material.normalGreen, NormalGreen::DirectX);
+        QCOMPARE(w->document()->undoStack()->count(), 0);
+    }
+
     void aNormalOnlyFolderIsNeverMergedAndOffersAHeightMap() {
         auto w = makeWindow();
         QVERIFY(w);
