@@ -21,6 +21,8 @@ void write(const std::string& path, const Image& image, bool deep) {
         throw std::runtime_error("cannot write " + path);
 }
 
+} // namespace
+
 Image withAlpha(const Image& rgb, const HeightField& alpha) {
     Image out(rgb.width, rgb.height, 4);
     for (int y = 0; y < rgb.height; ++y) {
@@ -32,8 +34,6 @@ Image withAlpha(const Image& rgb, const HeightField& alpha) {
     }
     return out;
 }
-
-} // namespace
 
 float packedValue(int channel, int x, int y) {
     constexpr std::array<float, 4> kBase{0.2f, 0.5f, 0.8f, 0.3f};

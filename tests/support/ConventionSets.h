@@ -40,6 +40,9 @@ ConventionTruth writeConventionSet(const std::string& folder,
                                    const std::vector<ConventionFile>& files, unsigned seed,
                                    NormalGreen green, int size = 64);
 
+// `rgb`'s first three channels with `alpha` as the fourth (a normal map packed as games pack it).
+Image withAlpha(const Image& rgb, const HeightField& alpha);
+
 // The packed file's channel values at texel (x, y): R, G, B, A.
 float packedValue(int channel, int x, int y);
 

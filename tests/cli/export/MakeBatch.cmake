@@ -7,12 +7,7 @@
 #                                     so), a grey ORM (occlusion only)
 #   tiles_nrm.png                     a normal map and no height map
 #   readme.txt                        no set
-function(cli)
-  execute_process(COMMAND ${CLI} ${ARGN} RESULT_VARIABLE rc)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "parallax-cli ${ARGN} failed")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../RunCli.cmake)
 file(REMOVE_RECURSE batch)
 file(MAKE_DIRECTORY batch/textures)
 cli(sample bricks --size 32 --out batch/bricks_height.png)

@@ -8,12 +8,7 @@
 #   glued/  stone01.png, stone01z.png (height), stone01n.png (normal): tags glued to the name
 #   nothing/  IMG_0001.png and notes.txt: no set
 #   nrm/    rock_nrm.png and rock_col.png: a normal map and no height map
-function(cli)
-  execute_process(COMMAND ${CLI} ${ARGN} RESULT_VARIABLE rc)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "parallax-cli ${ARGN} failed")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../RunCli.cmake)
 file(REMOVE_RECURSE rock wall two broken acg ph glued nothing nrm)
 file(MAKE_DIRECTORY rock wall two broken acg ph glued nothing nrm)
 cli(sample noise --size 32 --seed 3 --out rock/rock_disp.png)

@@ -7,6 +7,7 @@
 // the data, and hold the file's relief texel for texel. A normal map alone must give back a
 // height that follows the real depth map.
 
+#include "ConventionSets.h"
 #include "TestSupport.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/material/TextureSetImport.h"
@@ -45,16 +46,7 @@ HeightField relief(const std::string& path, bool depth) {
 
 // The normal map's RGB with `alpha` in its fourth channel, written as PNG (8 bits, exact).
 void packAlpha(const std::string& normal, const HeightField& alpha, const std::string& out) {
-    const Image rgb = readOrDie(normal);
-    Image packed(rgb.width, rgb.height, 4);
-    for (int y = 0; y < rgb.height; ++y) {
-        for (int x = 0; x < rgb.width; ++x) {
-            for (int c = 0; c < 3; ++c)
-                packed.at(x, y, c) = rgb.at(x, y, c);
-            packed.at(x, y, 3) = alpha.at(x, y);
-        }
-    }
-    if (!writeImage(out, packed, {}))
+    if (!writeImage(out, test::withAlpha(readOrDie(normal), alpha), {}))
         qFatal("cannot write %s", out.c_str());
 }
 
