@@ -5,11 +5,13 @@
 //
 //   parallax-bench-bake                      # everything (the brute forces take a while)
 //   parallax-bench-bake --benchmark_filter=Normal
+//   parallax-bench-bake --benchmark_filter='Normal/2048|HeightFromNormalMap'  # vs the normal bake
 
 #include "HeapCounter.h"
 #include "ProcessCpu.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/ConeMapReference.h"
+#include "parallax/bake/HeightFromNormals.h"
 #include "parallax/bake/NormalMapBaker.h"
 #include "parallax/sample/ProceduralMaps.h"
 
@@ -75,6 +77,16 @@ void RelaxedConeBruteForce(benchmark::State& state) {
     });
 }
 
+// A height map integrated from a normal map (a normal-only texture set's import), against the
+// normal bake of the same size in the same run.
+void HeightFromNormalMap(benchmark::State& state) {
+    const int size = static_cast<int>(state.range(0));
+    const Image normals =
+        *bakeNormalMap(mapFor(static_cast<int>(state.range(1)), size), NormalBakeOptions{});
+    run(state,
+        [&normals](const HeightField&) { benchmark::DoNotOptimize(heightFromNormals(normals)); });
+}
+
 void sizes(benchmark::internal::Benchmark* b, int size, int iterations) {
     b->Args({size, 0})
         ->Args({size, 1})
@@ -84,6 +96,8 @@ void sizes(benchmark::internal::Benchmark* b, int size, int iterations) {
 }
 
 BENCHMARK(Normal)->Apply([](auto* b) { sizes(b, 4096, 3); });
+BENCHMARK(Normal)->Apply([](auto* b) { sizes(b, 2048, 3); });
+BENCHMARK(HeightFromNormalMap)->Apply([](auto* b) { sizes(b, 2048, 2); });
 BENCHMARK(Cone)->Apply([](auto* b) { sizes(b, 1024, 3); });
 BENCHMARK(RelaxedCone)->Apply([](auto* b) { sizes(b, 1024, 1); });
 BENCHMARK(Cone)->Apply([](auto* b) { sizes(b, 256, 5); });

@@ -21,6 +21,12 @@ find_package(assimp CONFIG REQUIRED)
 # libpng: the core checks a PNG's data with its own error handler; the tests decode exported PNGs
 # the way engines do (gamma-aware).
 find_package(PNG REQUIRED)
+# KISS FFT (BSD-3-Clause): its header-only C++ template solves the Poisson problem of a height map
+# made from a normal map in double precision (core/src/bake/HeightFromNormals.cpp).
+find_path(PX_KISSFFT_INCLUDE kissfft/kissfft.hh)
+if(NOT PX_KISSFFT_INCLUDE)
+  message(FATAL_ERROR "kissfft/kissfft.hh not found: install Debian's libkissfft-dev (./setup.sh)")
+endif()
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Test Concurrent Svg)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
 find_package(benchmark CONFIG)

@@ -28,6 +28,16 @@ std::string inputPath(std::uint8_t selector) {
     return (folder / (std::string("input") + kExtensions[selector % kExtensionCount])).string();
 }
 
+// Every height that got through lies in [0, 1] (a NaN fails the test too).
+void checkUnit(const px::SharedTexels<float>& texels) {
+    for (const float h : texels) {
+        if (!(h >= 0.0f && h <= 1.0f)) {
+            std::fprintf(stderr, "height %g escaped the checks\n", h);
+            std::abort();
+        }
+    }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -61,13 +71,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             options.normalize = normalize;
             options.invert = normalize;
             px::Result<px::HeightField> field = px::heightFieldFromImage(*image, options, path);
-            if (field) {
-                for (const float h : field->texels) {
-                    if (!(h >= 0.0f && h <= 1.0f)) { // outside [0, 1] or NaN got through
-                        std::fprintf(stderr, "height %g escaped the checks\n", h);
-                        std::abort();
-                    }
-                }
+            if (field)
+                checkUnit(field->texels);
+            // Read by its own range as import does: still [0, 1], from a range with lo < hi.
+            px::Result<px::FittedHeight> fitted = px::fitHeightField(*image, options, path);
+            if (fitted) {
+                checkUnit(fitted->field.texels);
+                if (fitted->range && !(fitted->range->lo < fitted->range->hi))
+                    std::abort();
             }
         }
     }

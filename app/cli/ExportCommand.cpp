@@ -5,6 +5,7 @@
 #include "CommonOptions.h"
 #include "parallax/export/BatchScan.h"
 #include "parallax/export/Exporter.h"
+#include "parallax/material/MapFileName.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/MaterialNames.h"
 
@@ -20,7 +21,7 @@ namespace {
 struct ExportCliOptions {
     std::string material;
     HeightOptions height; // --height ... stands in for --material
-    std::string albedo, normal, ao, roughness, metallic;
+    std::string albedo, normal, ao, roughness, metallic, specular;
     std::string normalGreen = "opengl";
     std::optional<float> scale;
     std::optional<std::string> technique;
@@ -63,6 +64,7 @@ Material materialFromOptions(const ExportCliOptions& o) {
     m.maps.ao = o.ao;
     m.maps.roughness = o.roughness;
     m.maps.metallic = o.metallic;
+    m.maps.specular = o.specular;
     m.heightChannel = parseHeightChannel(o.height.channel).value_or(HeightChannel::Red);
     m.heightIsDepth = o.height.invert;
     m.wrap = o.height.wrapMode();
@@ -80,14 +82,10 @@ Material materialFromOptions(const ExportCliOptions& o) {
     if (!o.ao.empty() || !o.roughness.empty() || !o.metallic.empty())
         m.lighting = LightingModel::MetallicRoughness;
     std::string name = o.name;
-    if (name.empty()) { // bricks_height.png -> bricks
-        name = std::filesystem::path(o.height.file).stem().string();
-        for (std::string_view suffix : heightSuffixes()) {
-            if (name.size() > suffix.size() && name.ends_with(suffix)) {
-                name.resize(name.size() - suffix.size());
-                break;
-            }
-        }
+    if (name.empty()) { // bricks_height.png -> bricks, read as the import reads names
+        const std::vector<NameReading> readings = readMapFileName(o.height.file);
+        const NameReading& tagged = readings.front();
+        name = tagged.tag && !tagged.glued ? tagged.stem : readings.back().stem;
     }
     m.name = name.empty() ? "material" : name;
     return m;
@@ -132,33 +130,43 @@ int runBatch(const ExportCliOptions& o) {
     Result<Material> preset = loadMaterial(o.preset, MaterialCheck::Preset);
     if (!preset)
         return fail(preset.error().message);
-    Result<std::vector<BatchItem>> items = scanBatchFolder(o.batch, *preset);
-    if (!items)
-        return fail(items.error().message);
-    if (items->empty())
-        return fail(o.batch + ": no height maps (image files whose names end in _height, _h, "
-                              "_displacement, _disp or _depth)");
-    const std::size_t total = items->size();
+    Result<BatchFolder> folder = scanBatchFolder(o.batch);
+    if (!folder)
+        return fail(folder.error().message);
+    for (const SkippedFile& f : folder->unassigned)
+        std::cout << "not in a set: " << std::filesystem::path(f.path).filename().string() << " ("
+                  << f.why << ")\n";
+    const std::size_t total = folder->items.size();
     std::vector<std::string> failures;
     for (std::size_t i = 0; i < total; ++i) {
-        const BatchItem& item = (*items)[i];
-        const std::string file = std::filesystem::path(item.heightFile).filename().string();
-        std::cout << "[" << i + 1 << "/" << total << "] " << file << ": " << std::flush;
-        std::string problem = item.problem;
-        if (problem.empty()) {
-            const std::string out = (std::filesystem::path(o.out) / item.name).string();
-            Result<ExportResult> result = exportMaterial(item.material, "", exportOptions(o, out));
+        const BatchItem& item = folder->items[i];
+        std::cout << "[" << i + 1 << "/" << total << "] " << item.name << ": " << std::flush;
+        // Each set as `import` reads it: the same roles, channels, height or depth and green.
+        ExportOptions options =
+            exportOptions(o, (std::filesystem::path(o.out) / item.name).string());
+        Result<ImportedSet> set = importBatchItem(item, *preset, options.load);
+        std::string problem = set ? "" : set.error().message;
+        if (set) {
+            const Material material = set->material;
+            set->assets = {}; // the export reads the maps again, one set at a time
+            Result<ExportResult> result = exportMaterial(material, "", options);
             if (result) {
                 std::cout << "ok, " << result->files.size() << " files in " << result->folder
                           << "\n";
+                for (const std::string& line : importSummary(*set)) {
+                    if (!line.starts_with("Ignored: ")) // the set's own files only
+                        std::cout << "  " << line << "\n";
+                }
+                for (const std::string& note : result->notes)
+                    std::cout << "  note: " << note << "\n";
                 continue;
             }
             problem = result.error().message;
         }
         std::cout << "failed\n";
-        failures.push_back(file + ": " + problem);
+        failures.push_back(item.name + ": " + problem);
     }
-    std::cout << total << " height map" << (total == 1 ? "" : "s") << ": "
+    std::cout << total << " texture set" << (total == 1 ? "" : "s") << ": "
               << total - failures.size() << " exported, " << failures.size() << " failed\n";
     for (const std::string& failure : failures)
         std::cerr << "error: " << failure << "\n";
@@ -174,8 +182,8 @@ int runExport(const ExportCliOptions& o) {
     if (o.batch.empty() && !o.preset.empty())
         return fail("--preset goes with --batch");
     const bool mapOptions = !o.albedo.empty() || !o.normal.empty() || !o.ao.empty() ||
-                            !o.roughness.empty() || !o.metallic.empty() || o.scale || o.technique ||
-                            !o.name.empty();
+                            !o.roughness.empty() || !o.metallic.empty() || !o.specular.empty() ||
+                            o.scale || o.technique || !o.name.empty();
     if (mapOptions && o.height.file.empty())
         return fail("--albedo, --normal, --scale, --technique ... go with --height (a material "
                     "file or preset already says them)");
@@ -206,6 +214,8 @@ Action addExportCommand(CLI::App& app) {
     cmd->add_option("--ao", o->ao, "With --height: ambient occlusion map");
     cmd->add_option("--roughness", o->roughness, "With --height: roughness map");
     cmd->add_option("--metallic", o->metallic, "With --height: metallic map");
+    cmd->add_option("--specular", o->specular,
+                    "With --height: specular map (glTF and Unreal read it; see docs/export.md)");
     cmd->add_option("--scale", o->scale, "With --height: height scale in uv units")
         ->check(CLI::Range(0.0f, 100.0f));
     cmd->add_option("--technique", o->technique,
@@ -219,10 +229,12 @@ Action addExportCommand(CLI::App& app) {
                     "With --technique auto: steepest view angle, degrees (default 80)")
         ->check(CLI::Range(0.0f, 89.0f));
     cmd->add_option("--name", o->name, "With --height: material name (default: from the file)");
-    cmd->add_option("--batch", o->batch, "Folder of height maps (found by suffix, e.g. _height)");
+    cmd->add_option("--batch", o->batch,
+                    "Folder of texture sets (each read as import reads one: names, packing, "
+                    "height or depth, green)");
     cmd->add_option("--preset", o->preset,
                     "With --batch: material file whose settings each "
-                    "height map gets (its maps are ignored)");
+                    "set gets (its maps are ignored)");
     cmd->add_option("--format", o->format, "package, gltf, godot, unreal or unity")
         ->check(CLI::IsMember(names(exportFormatNames())))
         ->required();

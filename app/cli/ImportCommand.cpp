@@ -2,6 +2,7 @@
 // as the editor decides (parallax/material/TextureSetImport.h), with the same summary.
 
 #include "Cli.h"
+#include "parallax/image/ImageFile.h"
 #include "parallax/material/MapPaths.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/TextureSetImport.h"
@@ -20,7 +21,14 @@ struct ImportOptions {
     std::string name;                // the material's name (default: the set's)
     std::string out;
     bool force = false;
+    bool deriveHeight = false; // a normal-only set: integrate its normal map into a height map
 };
+
+// Where a derived height map goes: beside the material file, named after it.
+std::string derivedHeightPath(const std::string& materialFile) {
+    const std::filesystem::path out(materialFile);
+    return (out.parent_path() / (out.stem().string() + "_height.png")).string();
+}
 
 Result<std::vector<std::string>> inputFiles(const ImportOptions& o) {
     std::error_code ec;
@@ -53,12 +61,41 @@ int runImport(const ImportOptions& o) {
         return fail(set.error().message);
     if (!o.name.empty())
         set->material.name = o.name;
+    std::string heightFile; // written here, removed again if the material cannot be
+    bool keepHeight = false;
+    if (set->heightMissing) {
+        if (!o.deriveHeight) {
+            for (const std::string& line : importSummary(*set))
+                std::cout << line << "\n";
+            return fail(source + ": the set " + plan->name +
+                        " has no height map, only a normal map; --derive-height makes one "
+                        "from it");
+        }
+        heightFile = derivedHeightPath(o.out);
+        if (std::filesystem::exists(heightFile, ec)) {
+            if (!o.force)
+                return fail(heightFile + ": already exists; --force replaces it");
+            keepHeight = true; // replaced in place, never removed
+        }
+        if (Status s = deriveHeight(*set); !s)
+            return fail(s.error().message);
+        ImageWriteOptions write;
+        write.format = PixelFormat::UInt16;
+        if (Status s = writeImage(heightFile, set->assets.height.toImage(), write); !s)
+            return fail(s.error().message);
+        set->material.maps.height = absolutePath(heightFile);
+    }
     Material material = set->material;
     material.maps = relativeMapPaths(material.maps, o.out);
-    if (Status s = saveMaterial(material, o.out); !s)
+    if (Status s = saveMaterial(material, o.out); !s) {
+        if (!heightFile.empty() && !keepHeight)
+            std::filesystem::remove(heightFile, ec);
         return fail(s.error().message);
+    }
     for (const std::string& line : importSummary(*set))
         std::cout << line << "\n";
+    if (!heightFile.empty())
+        std::cout << "wrote " << heightFile << "\n";
     std::cout << "wrote " << o.out << "\n";
     return 0;
 }
@@ -69,13 +106,18 @@ Action addImportCommand(CLI::App& app) {
     auto o = std::make_shared<ImportOptions>();
     CLI::App* cmd = app.add_subcommand(
         "import", "Make a material file from a texture set: a folder or its files, each map known "
-                  "by its suffix (_disp, _normal, ...), height or depth and the normal map's green "
-                  "told from the data");
+                  "by its name as texture libraries and engines write them (_disp, _nor_gl, "
+                  "NormalDX, _arm, _ddna, ...) or by its texels, height or depth and the normal "
+                  "map's green told from the data; every file is reported");
     cmd->add_option("inputs", o->inputs, "A folder, or the set's image files")->required();
     cmd->add_option("--set", o->set, "Which set, where the folder holds several (its name)");
     cmd->add_option("--name", o->name, "The material's name (default: the set's)");
     cmd->add_option("--out", o->out, "The material file to write (.json)")->required();
-    cmd->add_flag("--force", o->force, "Replace an existing material file");
+    cmd->add_flag("--force", o->force,
+                  "Replace an existing material file (and derived height map)");
+    cmd->add_flag("--derive-height", o->deriveHeight,
+                  "A set with only a normal map: make its height map by integrating the normal "
+                  "map (written beside --out as NAME_height.png, marked as derived)");
     return [o] { return runImport(*o); };
 }
 

@@ -11,6 +11,7 @@
 
 #include <QTemporaryDir>
 #include <QTest>
+#include <algorithm>
 #include <cmath>
 
 using namespace px;
@@ -51,6 +52,8 @@ private slots:
         QTest::newRow("cone") << "wall_cone.png" << int(MapKind::Cone) << false;
         QTest::newRow("relaxed") << "wall_relaxed_cone.png" << int(MapKind::RelaxedCone) << false;
         QTest::newRow("ao") << "wall_occlusion.png" << int(MapKind::Ao) << false;
+        QTest::newRow("spec") << "wall_spec_2k.png" << int(MapKind::Specular) << false;
+        QTest::newRow("REFL") << "wall_REFL.jpg" << int(MapKind::Specular) << false;
     }
     void suffixesNameMaps() {
         QFETCH(QString, file);
@@ -122,6 +125,67 @@ private slots:
         QVERIFY(loaded);
         QVERIFY(std::abs(loaded->state.assets->height.at(1, 1) - 0.75f) < 1e-4f);
         QVERIFY(loaded->state.material.heightIsDepth);
+    }
+
+    // A float height map in its own units: read by its range, which the material records (and
+    // keeps when the same file is read again), the message says; saved and reopened the same.
+    void floatHeightInItsOwnUnitsIsReadByItsRange() {
+        QTemporaryDir dir;
+        Image bake(6, 4, 1);
+        for (std::size_t i = 0; i < bake.pixels.size(); ++i)
+            bake.pixels[i] = -2.5f + 0.25f * static_cast<float>(i); // -2.5 .. 3.25
+        const std::string path = dir.filePath("wall_bake.exr").toStdString();
+        QVERIFY(writeImage(path, bake, {PixelFormat::Float, false}));
+        const DocumentState state = makeSampleState(ProceduralMap::Bricks, 8);
+        const Result<Loaded> loaded = loadMapFile(state, MapKind::Height, path);
+        QVERIFY2(loaded, loaded ? "" : loaded.error().message.c_str());
+        const Material& m = loaded->state.material;
+        QVERIFY((m.heightRange == HeightRange{-2.5f, 3.25f}));
+        QCOMPARE(loaded->state.assets->height.at(0, 0), 0.0f);
+        QCOMPARE(loaded->state.assets->height.at(5, 3), 1.0f);
+        QVERIFY(std::abs(loaded->state.assets->height.at(1, 0) - 0.25f / 5.75f) < 1e-7f);
+        QVERIFY(std::any_of(loaded->notes.begin(), loaded->notes.end(), [](const std::string& n) {
+            return n.find("wall_bake.exr holds heights from -2.5 to 3.25") != std::string::npos;
+        }));
+        // Read again (depth ticked), the material's wider range is kept where the file fits it.
+        DocumentState wider = loaded->state;
+        wider.material.heightRange = HeightRange{-4.0f, 4.0f};
+        const Result<Loaded> again = loadMapFile(wider, MapKind::Height, path, true);
+        QVERIFY(again);
+        QVERIFY((again->state.material.heightRange == HeightRange{-4.0f, 4.0f}));
+        QCOMPARE(again->state.assets->height.at(0, 0), 1.0f - 1.5f / 8.0f);
+        // Saved and reopened: the same heights.
+        const std::string file = dir.filePath("wall.json").toStdString();
+        const Result<DocumentState> saved = saveDocumentState(loaded->state, file);
+        QVERIFY2(saved, saved ? "" : saved.error().message.c_str());
+        const Result<Loaded> reopened = openMaterialFile(file);
+        QVERIFY2(reopened, reopened ? "" : reopened.error().message.c_str());
+        QVERIFY(reopened->state.material.heightRange == m.heightRange);
+        for (std::size_t i = 0; i < bake.pixels.size(); ++i)
+            QCOMPARE(reopened->state.assets->height.texels[i],
+                     loaded->state.assets->height.texels[i]);
+        // A PNG loaded after it drops the range.
+        const std::string png = writeGrey(dir, "wall_height.png", 4, 4, 0.5f);
+        const Result<Loaded> plain = loadMapFile(loaded->state, MapKind::Height, png);
+        QVERIFY(plain && !plain->state.material.heightRange);
+    }
+
+    // A specular map loads into its slot as stored and is saved with the material.
+    void specularMapIsKept() {
+        QTemporaryDir dir;
+        const std::string spec = writeGrey(dir, "wall_spec.png", 8, 8, 0.4f);
+        const DocumentState state = makeSampleState(ProceduralMap::Bricks, 8);
+        const Result<Loaded> loaded = loadMapFile(state, MapKind::Specular, spec);
+        QVERIFY(loaded);
+        QVERIFY(loaded->state.hasMap(MapKind::Specular));
+        QVERIFY(std::abs(loaded->state.assets->specular.at(3, 3) - 0.4f) < 1e-4f);
+        QCOMPARE(loaded->state.material.maps.specular, spec);
+        const std::string file = dir.filePath("wall.json").toStdString();
+        QVERIFY(saveDocumentState(loaded->state, file));
+        const Result<Loaded> reopened = openMaterialFile(file);
+        QVERIFY2(reopened, reopened ? "" : reopened.error().message.c_str());
+        QVERIFY(reopened->state.hasMap(MapKind::Specular));
+        QVERIFY(readTextFile(file)->find("\"specular\": \"wall_spec.png\"") != std::string::npos);
     }
 
     void sampleSavesAndReopensEqual() {
@@ -198,7 +262,7 @@ private slots:
         QCOMPARE(QString::fromStdString(raw->maps.height), QString("../../a/maps/w_height.png"));
     }
 
-    void folderImportFindsMapsBySuffix() {
+    void folderImportFindsMapsByName() {
         QTemporaryDir dir;
         writeGrey(dir, "rock_disp.png", 8, 8, 0.5f);
         writeGrey(dir, "rock_color.png", 8, 8, 0.7f);
@@ -206,15 +270,14 @@ private slots:
         const Result<TextureSetPlan> found =
             planTextureSet(*folderFiles(dir.path().toStdString()), "dir");
         QVERIFY(found);
-        QCOMPARE(found->assigned.size(), std::size_t(2));
-        QCOMPARE(int(found->assigned.front().kind), int(MapKind::Height));
+        QCOMPARE(found->files.size(), std::size_t(2));
         QCOMPARE(found->ignored.size(), std::size_t(1));
-        const Result<Loaded> loaded =
-            loadMaps(makeSampleState(ProceduralMap::Bricks, 16), found->assigned);
-        QVERIFY(loaded);
-        QCOMPARE(loaded->state.assets->height.width, 8);
-        QCOMPARE(loaded->state.assets->albedo.width, 8);
-        QVERIFY(!loaded->state.isUnsaved(MapKind::Albedo));
+        Result<ImportedSet> set = importTextureSet(*found);
+        QVERIFY(set);
+        const DocumentState state = importedState(std::move(*set));
+        QCOMPARE(state.assets->height.width, 8);
+        QCOMPARE(state.assets->albedo.width, 8);
+        QVERIFY(!state.isUnsaved(MapKind::Albedo) && !state.isUnsaved(MapKind::Height));
     }
 
     void folderImportIsAllOrNothing() {
@@ -224,10 +287,9 @@ private slots:
         const Result<TextureSetPlan> found =
             planTextureSet(*folderFiles(dir.path().toStdString()), "dir");
         QVERIFY(found);
-        const Result<Loaded> loaded =
-            loadMaps(makeSampleState(ProceduralMap::Bricks, 16), found->assigned);
-        QVERIFY(!loaded);
-        QVERIFY(loaded.error().message.find("rock_normal.png") != std::string::npos);
+        const Result<ImportedSet> set = importTextureSet(*found);
+        QVERIFY(!set);
+        QVERIFY(set.error().message.find("rock_normal.png") != std::string::npos);
     }
 
     void badMaterialFileNamesItself() {

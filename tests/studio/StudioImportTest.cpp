@@ -1,8 +1,9 @@
 // Importing texture sets in the editor, as an artist opening their own folder would, on Qt's
 // offscreen platform: a dropped set becomes a new material named after it with its relief read
 // from the data and its normal map in use; two sets are never mixed; the summary flips the
-// reading in one click; the name field, "auto" green, a stale baked normal map and baking over
-// a loaded one.
+// reading in one click and Enter keeps it; a normal-only folder is never merged into the open
+// material and offers a derived height map; an unrecognised folder is refused with the report;
+// the name field, "auto" green, a stale baked normal map and baking over a loaded one.
 
 #include "StudioTestSupport.h"
 #include "TextureSets.h"
@@ -11,6 +12,7 @@
 #include "panels/MapRow.h"
 #include "panels/MapsPanel.h"
 #include "panels/MaterialPanel.h"
+#include "parallax/io/AtomicWrite.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -104,7 +106,124 @@ private slots:
         QVERIFY(w->document()->state().material.maps.albedo.empty());
     }
 
-    void filesWithoutAHeightMapAddToTheMaterial() {
+    void enterKeepsTheDataDecision() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        spec.stem = "slate";
+        spec.depth = true;
+        spec.seed = 6;
+        writeTextureSet(dir.path().toStdString(), spec);
+        QVERIFY(w->importFolder(dir.path()));
+        QVERIFY(w->document()->state().material.heightIsDepth);
+        ImportSummaryDialog* summary = w->importSummary();
+        QVERIFY(summary);
+        QVERIFY(!summary->flipButton()->isDefault() && !summary->flipButton()->autoDefault());
+        summary->show();
+        QVERIFY(QTest::qWaitForWindowExposed(summary));
+        summary->flipButton()->setFocus(); // even with the flip focused, Enter is not a flip
+        QTest::keyClick(summary, Qt::Key_Return);
+        QVERIFY(w->document()->state().material.heightIsDepth);
+        QVERIFY(!summary->isVisible());
+    }
+
+    // As an artist meets it: Import Folder in an interactive session, on a set whose height is
+    // named _hgt (a name the old import did not know) beside an open material. A new material,
+    // nothing of the open one kept, the report on screen, and Enter accepts the data's reading.
+    void importFolderShowsTheReportAndEnterAccepts() {
+        auto w = makeWindow(1, 64, true);
+        QVERIFY(w);
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        spec.stem = "stone";
+        spec.heightSuffix = "_hgt";
+        spec.depth = true;
+        spec.green = NormalGreen::DirectX;
+        spec.seed = 4;
+        spec.size = 48;
+        const auto written = writeTextureSet(dir.path().toStdString(), spec);
+        const std::string openName = w->document()->material().name;
+        const auto openAssets = w->document()->state().assets;
+
+        QVERIFY(w->importFolder(dir.path()));
+        const DocumentState& s = w->document()->state();
+        QCOMPARE(QString::fromStdString(s.material.name), QString("stone"));
+        QVERIFY(s.material.name != openName);
+        QVERIFY(s.assets != openAssets);
+        QCOMPARE(s.assets->height.width, spec.size); // the set's height, not the open one's
+        QCOMPARE(QString::fromStdString(s.material.maps.height),
+                 QString::fromStdString(written.heightFile));
+        QVERIFY(s.material.heightIsDepth);
+        QCOMPARE(s.material.normalGreen, NormalGreen::DirectX);
+        QCOMPARE(w->document()->undoStack()->count(), 0); // a document of its own
+
+        ImportSummaryDialog* summary = w->importSummary();
+        QVERIFY(summary);
+        QVERIFY(QTest::qWaitForWindowExposed(summary)); // shown without being asked
+        for (const char* file : {"stone_hgt.png", "stone_normal.png", "stone_albedo.png"})
+            QVERIFY2(summary->text().contains(file), qPrintable(summary->text()));
+        QTest::keyClick(summary, Qt::Key_Return);
+        QVERIFY(!w->importSummary() || !w->importSummary()->isVisible()); // accepted, closed
+        QVERIFY(w->document()->state().material.heightIsDepth);
+        QCOMPARE(w->document()->state().material.normalGreen, NormalGreen::DirectX);
+        QCOMPARE(w->document()->undoStack()->count(), 0);
+    }
+
+    void aNormalOnlyFolderIsNeverMergedAndOffersAHeightMap() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        spec.stem = "stone01";
+        spec.seed = 2;
+        spec.green = NormalGreen::DirectX;
+        const auto written = writeTextureSet(dir.path().toStdString(), spec);
+        QVERIFY(QFile::remove(QString::fromStdString(written.heightFile)));
+        const auto before = w->document()->state().assets;
+        const std::string sampleName = w->document()->material().name;
+
+        QVERIFY(!w->importFolder(dir.path())); // not yet: it asks
+        auto* box = w->findChild<QMessageBox*>("derive-height");
+        QVERIFY(box);
+        QVERIFY(box->text().contains("stone01_normal.png"));
+        // Nothing merged into the open material meanwhile.
+        QCOMPARE(w->document()->material().name, sampleName);
+        QVERIFY(w->document()->state().assets == before);
+
+        QVERIFY(QTest::qWaitForWindowExposed(box));
+        QTest::keyClick(box, Qt::Key_Return); // the default: make the height map
+        const DocumentState& s = w->document()->state();
+        QCOMPARE(QString::fromStdString(s.material.name), QString("stone01"));
+        QVERIFY(w->document()->filePath().isEmpty());
+        QCOMPARE(s.assets->height.width, spec.size);
+        QVERIFY(s.isUnsaved(MapKind::Height)); // written beside the material when saved
+        QCOMPARE(s.material.heightDerivedFrom, std::string("stone01_normal.png"));
+        QCOMPARE(s.material.normalGreen, NormalGreen::DirectX);
+        QCOMPARE(QString::fromStdString(s.material.maps.albedo),
+                 QString::fromStdString(written.albedoFile));
+        QVERIFY(w->importSummary());
+        QVERIFY(w->importSummary()->decision().contains("derived from the normal map"));
+        QVERIFY(!w->importSummary()->flipButton()->isEnabled());
+    }
+
+    void anUnrecognisedFolderIsRefusedWithTheReport() {
+        auto w = makeWindow();
+        QVERIFY(w);
+        QTemporaryDir dir;
+        QVERIFY(writeTextFile(dir.filePath("IMG_0001.jpg").toStdString(), "x"));
+        QVERIFY(writeTextFile(dir.filePath("notes.txt").toStdString(), "x"));
+        const std::string name = w->document()->material().name;
+        QVERIFY(!w->importFolder(dir.path()));
+        QVERIFY2(w->lastProblem().contains("no texture set recognised"),
+                 qPrintable(w->lastProblem()));
+        QVERIFY(w->lastProblem().contains("IMG_0001.jpg: no map tag"));
+        QVERIFY(w->lastProblem().contains("notes.txt: not an image file"));
+        QCOMPARE(w->document()->material().name, name);
+        QCOMPARE(w->document()->undoStack()->count(), 0);
+    }
+
+    void aSingleDroppedMapAddsToTheMaterial() {
         auto w = makeWindow();
         QVERIFY(w);
         QTemporaryDir dir;
@@ -115,6 +234,16 @@ private slots:
         QVERIFY(w->document()->state().hasMap(MapKind::Normal));
         // A loaded normal map is used.
         QCOMPARE(w->document()->material().normalSource, NormalSource::Map);
+        // A packed map alone is not loaded as a height map.
+        const std::string packed = dir.filePath("rock_arm.png").toStdString();
+        QVERIFY(
+            QFile::copy(QString::fromStdString(set.albedoFile), QString::fromStdString(packed)));
+        const int steps = w->document()->undoStack()->count();
+        QVERIFY(dropFiles(w.get(), {QString::fromStdString(packed)}));
+        QVERIFY2(w->lastProblem().contains("rock_arm.png: ORM map by its name; import its set's "
+                                           "folder to use it."),
+                 qPrintable(w->lastProblem()));
+        QCOMPARE(w->document()->undoStack()->count(), steps);
     }
 
     void nameFieldRenamesUndoably() {

@@ -31,9 +31,16 @@ WrittenSet writeTextureSet(const std::string& folder, const TextureSetSpec& spec
         for (float& h : file.texels)
             h = 1.0f - h;
     }
+    const bool units = spec.fileScale != 0.0f;
+    if (units) {
+        for (float& h : file.texels)
+            h = spec.fileOffset + spec.fileScale * h;
+    }
+    set.file = file;
     const std::string base = folder + "/" + spec.stem;
-    set.heightFile = base + (spec.heightSuffix.empty() ? "_disp" : spec.heightSuffix) + ".png";
-    write(set.heightFile, file.toImage(), PixelFormat::UInt16);
+    set.heightFile = base + (spec.heightSuffix.empty() ? "_disp" : spec.heightSuffix) +
+                     (units ? ".exr" : ".png");
+    write(set.heightFile, file.toImage(), units ? PixelFormat::Float : PixelFormat::UInt16);
     if (spec.normal) {
         NormalBakeOptions options;
         options.heightScale = 0.05f;

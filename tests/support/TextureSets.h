@@ -18,14 +18,19 @@ struct TextureSetSpec {
     std::string heightSuffix;                // default: "_depth"/"_height" would give it away
     int size = 64;
     unsigned seed = 1;
+    // Non-zero: the height file is a float EXR in its maker's units, offset + scale * value.
+    float fileScale = 0.0f;
+    float fileOffset = 0.0f;
 };
 
 struct WrittenSet {
-    HeightField height; // what the material must end up with: white = high
+    HeightField height; // what the material must end up with: white = high (before any range)
+    HeightField file;   // the height file's values
     std::string heightFile, normalFile, albedoFile;
 };
 
-// Writes the set into `folder` (16-bit height, 8-bit normal and albedo PNGs). The height map is
+// Writes the set into `folder` (16-bit height or float EXR, 8-bit normal and albedo PNGs). The
+// height map is
 // a procedural one chosen by the seed (noise, stones or bricks); the suffix is "_disp" unless told.
 WrittenSet writeTextureSet(const std::string& folder, const TextureSetSpec& spec);
 

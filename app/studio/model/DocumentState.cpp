@@ -64,6 +64,8 @@ bool DocumentState::hasMap(MapKind kind) const {
         return !a.roughness.empty();
     case MapKind::Metallic:
         return !a.metallic.empty();
+    case MapKind::Specular:
+        return !a.specular.empty();
     }
     return false;
 }

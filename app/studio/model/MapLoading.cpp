@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 namespace px::studio {
@@ -135,11 +136,25 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
         HeightLoadOptions options;
         options.channel = state.material.heightChannel;
         options.invert = depth;
-        Result<HeightField> field = loadHeightField(path, options);
-        if (!field)
-            return field.error();
-        assets.height = std::move(*field);
+        // The same file read again keeps the range the material has for it, where it still fits.
+        if (!state.material.maps.height.empty() &&
+            absolutePath(path) == absolutePath(state.material.maps.height))
+            options.range = state.material.heightRange;
+        Result<FittedHeight> fitted = loadHeightFieldFitted(path, options);
+        if (!fitted)
+            return fitted.error();
+        assets.height = std::move(fitted->field);
+        next.material.heightRange = fitted->range;
+        if (fitted->range && fitted->range != state.material.heightRange) {
+            std::ostringstream note;
+            note << std::filesystem::path(path).filename().string() << " holds heights from "
+                 << fitted->range->lo << " to " << fitted->range->hi
+                 << " (a float map in its own units): read as stored, that range as 0 to 1; "
+                    "the material records it.";
+            loaded.notes.push_back(note.str());
+        }
         next.material.heightIsDepth = depth;
+        next.material.heightDerivedFrom.clear();
         dropDerivedMaps(next, assets, loaded.notes);
         break;
     }
@@ -174,6 +189,15 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
         (kind == MapKind::Cone ? assets.cone : assets.relaxedCone) = std::move(*cone);
         break;
     }
+    case MapKind::Specular: {
+        Result<Image> image = readMapImage(path, 1, "specular map");
+        if (!image)
+            return image.error();
+        assets.specular = std::move(*image);
+        loaded.notes.push_back("The specular map is kept for the exports that read one (glTF, "
+                               "Unreal); the preview does not draw it.");
+        break;
+    }
     case MapKind::Ao:
     case MapKind::Roughness:
     case MapKind::Metallic: {
@@ -184,6 +208,12 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
                       : kind == MapKind::Roughness ? assets.roughness
                                                    : assets.metallic;
         slot = std::move(*image);
+        // A file of its own: read as stored, not as the packed file it replaces.
+        (kind == MapKind::Ao          ? next.material.surface.ao
+         : kind == MapKind::Roughness ? next.material.surface.roughness
+                                      : next.material.surface.metallic) = HeightChannel::Red;
+        if (kind == MapKind::Roughness)
+            next.material.surface.gloss = false;
         break;
     }
     }
@@ -200,23 +230,13 @@ Result<Loaded> reloadHeight(const DocumentState& state) {
     return loadMapFile(state, MapKind::Height, file, state.material.heightIsDepth);
 }
 
-Result<Loaded> loadMaps(const DocumentState& state, const std::vector<SetFile>& maps) {
-    Loaded all;
-    all.state = state;
-    for (const SetFile& map : maps) {
-        Result<Loaded> next = loadMapFile(all.state, map.kind, map.path, map.depthBySuffix);
-        if (!next)
-            return next.error();
-        all.state = std::move(next->state);
-        all.notes.insert(all.notes.end(), next->notes.begin(), next->notes.end());
-    }
-    return all;
-}
-
 DocumentState importedState(ImportedSet set) {
     DocumentState state;
     state.material = std::move(set.material);
     set.assets.albedo = set.assets.albedo.empty() ? Image{} : toRgb(std::move(set.assets.albedo));
+    // A height map derived from the normal map has no file yet: saved with the material.
+    state.setUnsaved(MapKind::Height,
+                     !set.assets.height.empty() && state.material.maps.height.empty());
     state.assets = std::make_shared<const MaterialAssets>(std::move(set.assets));
     return state;
 }

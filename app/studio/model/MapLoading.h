@@ -31,11 +31,8 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
 // (after they changed). Fails when the height map has no file.
 Result<Loaded> reloadHeight(const DocumentState& state);
 
-// Loads every map of a texture set's plan into `state`, all or nothing (files dropped without a
-// height map add to the material being edited).
-Result<Loaded> loadMaps(const DocumentState& state, const std::vector<SetFile>& maps);
-
-// A new document holding an imported texture set: no file yet, the maps the set's files.
+// A new document holding an imported texture set: no file yet, the maps the set's files (a height
+// map derived from the normal map is held in memory, unsaved, until the material is saved).
 DocumentState importedState(ImportedSet set);
 
 } // namespace px::studio

@@ -50,6 +50,9 @@ Status writeMap(const MaterialAssets& assets, MapKind kind, const std::string& f
     case MapKind::Metallic:
         options.format = PixelFormat::UInt8;
         return writeImage(file, assets.metallic, options);
+    case MapKind::Specular:
+        options.format = PixelFormat::UInt8;
+        return writeImage(file, assets.specular, options);
     }
     return success();
 }
@@ -80,6 +83,9 @@ bool sameMap(const MaterialAssets& a, const MaterialAssets& b, MapKind kind) {
     case MapKind::Metallic:
         return a.metallic.width == b.metallic.width &&
                sameData(a.metallic.pixels, b.metallic.pixels);
+    case MapKind::Specular:
+        return a.specular.width == b.specular.width &&
+               sameData(a.specular.pixels, b.specular.pixels);
     }
     return false;
 }
@@ -97,6 +103,7 @@ void adoptSavedMaps(DocumentState& state, const DocumentState& saved) {
         if (kind == MapKind::Height) {
             state.material.heightIsDepth = saved.material.heightIsDepth;
             state.material.heightChannel = saved.material.heightChannel;
+            state.material.heightRange = saved.material.heightRange;
         }
     }
 }
@@ -123,6 +130,7 @@ Result<DocumentState> saveDocumentState(const DocumentState& state, const std::s
             // The file holds heights as they are in memory: white = high, in red.
             saved.material.heightIsDepth = false;
             saved.material.heightChannel = HeightChannel::Red;
+            saved.material.heightRange.reset(); // ... from 0 to 1
         }
     }
     Material onDisk = saved.material;

@@ -33,16 +33,24 @@ ImportSummaryDialog::ImportSummaryDialog(const ImportedSet& set, QWidget* parent
     m_list->setMinimumSize(420, 160);
     layout->addWidget(m_list, 1);
 
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    // Enter keeps what the data decided: OK is the default, the flip never is.
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok, this);
+    QPushButton* ok = buttons->button(QDialogButtonBox::Ok);
+    ok->setDefault(true);
+    ok->setAutoDefault(true);
     m_flip = buttons->addButton(set.material.heightIsDepth ? tr("Read as height instead")
                                                            : tr("Read as depth instead"),
                                 QDialogButtonBox::ActionRole);
+    m_flip->setAutoDefault(false);
+    m_flip->setDefault(false);
+    m_flip->setEnabled(!set.material.maps.height.empty()); // a derived height has no reading
     m_flip->setToolTip(tr("Read the height file the other way: white = high or white = deep "
                           "(the Depth map box of the Parameters panel)."));
     connect(m_flip, &QPushButton::clicked, this, [this] {
         emit flipRequested();
         m_flip->setEnabled(false); // once: the Depth map box flips it back
     });
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
     layout->addWidget(buttons);
 }

@@ -51,6 +51,8 @@ template <class F> auto withMap(const MaterialAssets& a, MapKind kind, F&& f) {
         return f(a.roughness);
     case MapKind::Metallic:
         return f(a.metallic);
+    case MapKind::Specular:
+        return f(a.specular);
     }
     return f(a.albedo); // not reached: every kind is named above
 }

@@ -134,6 +134,9 @@ void MapsPanel::clearMap(MapKind kind) {
                          case MapKind::Metallic:
                              assets->metallic = {};
                              break;
+                         case MapKind::Specular:
+                             assets->specular = {};
+                             break;
                          case MapKind::Height:
                              return; // every technique reads it
                          }

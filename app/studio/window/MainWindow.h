@@ -65,9 +65,11 @@ public:
     bool openFile(const QString& path);
     bool saveTo(const QString& path);
     bool loadMap(MapKind kind, const QString& path, bool depth = false);
-    // A folder or files holding a texture set with a height map become a new material named after
-    // the set; `set` chooses where there are several (empty: ask, or refuse when not interactive).
-    // Files without a height map, or a single file, add to the material being edited.
+    // A folder or files holding a texture set become a new material named after the set, never
+    // merged into the open one; `set` chooses where there are several (empty: ask, or refuse when
+    // not interactive). A set with only a normal map asks (the box "derive-height") whether to
+    // make its height map, and is imported once answered. A single image adds to the material
+    // being edited, as one undoable step.
     bool importFolder(const QString& folder, const QString& set = {});
     bool importFiles(const QStringList& paths, const QString& set = {}); // what a drop does
     // The preview's own mesh (MainWindowMesh.cpp): an OBJ or glTF file loaded in the background
@@ -137,6 +139,8 @@ private:
     void adopt(const QString& text, const DocumentState& state);
     bool importSet(const std::vector<std::string>& files, const QString& source, QString set);
     void showImportSummary(const ImportedSet& set);
+    void offerDerivedHeight(ImportedSet set);
+    void adoptImported(const ImportedSet& set);
     bool maybeSave(); // false: the user cancelled
     bool save();
     bool saveAs();

@@ -8,6 +8,7 @@
 #include "panels/ExportDialog.h"
 #include "panels/ImportSummaryDialog.h"
 #include "panels/MaterialPanel.h"
+#include "parallax/material/MapFileName.h"
 #include "parallax/mesh/MeshLoader.h"
 #include "preview/ViewportGrid.h"
 #include "widgets/FileDialogs.h"
@@ -21,6 +22,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPushButton>
 #include <QScopedValueRollback>
 #include <QStatusBar>
 
@@ -204,6 +206,18 @@ bool MainWindow::importFiles(const QStringList& paths, const QString& set) {
     // suffix; with no known suffix, the height map: that is what this editor is about.
     if (paths.size() == 1) {
         const std::optional<SuffixMatch> match = mapKindFromFileName(files.front());
+        const NameReading name = readMapFileName(files.front()).front();
+        if (!match && name.tag && !name.glued) {
+            // Packed, gloss or unused maps are read with their set, never as a height map.
+            const std::string_view what =
+                name.tag->what.empty() ? roleName(name.tag->role) : name.tag->what;
+            showProblem(
+                tr("Not a map on its own"),
+                tr("%1: %2 by its name; import its set's folder to use it.")
+                    .arg(QFileInfo(paths.front()).fileName(),
+                         QString::fromUtf8(what.data(), static_cast<qsizetype>(what.size()))));
+            return false;
+        }
         return loadMap(match ? match->kind : MapKind::Height, paths.front());
     }
     return importSet(files, paths.size() == 1 ? paths.front() : tr("the dropped files"), set);
@@ -231,25 +245,7 @@ bool MainWindow::importSet(const std::vector<std::string>& files, const QString&
         showProblem(tr("Nothing imported"), QString::fromStdString(plan.error().message));
         return false;
     }
-    // Files without a height map are not a material of their own: they add to this one.
-    if (!plan->find(MapKind::Height)) {
-        Result<Loaded> loaded = loadInBackground<Loaded>(
-            this, tr("%n map(s)", nullptr, static_cast<int>(plan->assigned.size())),
-            [state = m_document->state(), files = plan->assigned] {
-                return loadMaps(state, files);
-            });
-        if (!loaded) {
-            if (cancelledLoad(statusBar(), loaded.error()))
-                return false;
-            showProblem(tr("Cannot import the maps"),
-                        QString::fromStdString(loaded.error().message));
-            return false;
-        }
-        adopt(tr("Import %n map(s)", nullptr, static_cast<int>(plan->assigned.size())),
-              loaded->state);
-        showNotes(loaded->notes);
-        return true;
-    }
+    // Never merged into the open material: a set is a material of its own.
     if (!maybeSave())
         return false;
     Result<ImportedSet> imported = loadInBackground<ImportedSet>(
@@ -261,12 +257,53 @@ bool MainWindow::importSet(const std::vector<std::string>& files, const QString&
                     QString::fromStdString(imported.error().message));
         return false;
     }
-    DocumentState state = importedState(*imported);
+    if (imported->heightMissing) {
+        offerDerivedHeight(std::move(*imported));
+        return false; // imported once the user says how (offerDerivedHeight)
+    }
+    adoptImported(*imported);
+    return true;
+}
+
+void MainWindow::offerDerivedHeight(ImportedSet set) {
+    // Only a normal map: parallax needs a height map, which can be integrated from it.
+    auto* box = new QMessageBox(
+        QMessageBox::Question, tr("No height map"),
+        tr("The texture set %1 has no height map, only the normal map %2. Make a height map "
+           "from the normal map (integrated from its slopes; marked as derived)?")
+            .arg(QString::fromStdString(set.plan.name),
+                 QFileInfo(QString::fromStdString(set.material.maps.normal)).fileName()),
+        QMessageBox::Cancel, this);
+    box->setObjectName(QStringLiteral("derive-height"));
+    QPushButton* make = box->addButton(tr("Make a Height Map"), QMessageBox::AcceptRole);
+    box->setDefaultButton(make);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setWindowModality(Qt::WindowModal);
+    auto held = std::make_shared<ImportedSet>(std::move(set));
+    connect(make, &QPushButton::clicked, this, [this, held] {
+        Result<ImportedSet> derived = loadInBackground<ImportedSet>(
+            this, tr("height map"), [set = *held]() mutable -> Result<ImportedSet> {
+                if (Status s = deriveHeight(set); !s)
+                    return s.error();
+                return std::move(set);
+            });
+        if (!derived) {
+            if (!cancelledLoad(statusBar(), derived.error()))
+                showProblem(tr("Cannot make the height map"),
+                            QString::fromStdString(derived.error().message));
+            return;
+        }
+        adoptImported(*derived);
+    });
+    box->open();
+}
+
+void MainWindow::adoptImported(const ImportedSet& set) {
+    DocumentState state = importedState(set);
     state.views = m_document->state().views; // the viewports' techniques are not the material's
     m_document->reset(std::move(state), {});
-    showImportSummary(*imported);
+    showImportSummary(set);
     bakeMissingConeMaps();
-    return true;
 }
 
 ImportSummaryDialog* MainWindow::importSummary() const {

@@ -15,4 +15,5 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/ConeMapBaker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/NormalMapBaker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/NormalMapConversion.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/HeightFromNormals.cpp
 )

@@ -5,6 +5,7 @@
 #include "ExportJob.h"
 #include "ExportTextures.h"
 #include "io/ShortestDecimal.h"
+#include "parallax/material/MapContent.h"
 
 #include <sstream>
 
@@ -63,6 +64,22 @@ Status writeUnreal(ExportJob& job) {
         note << "  " << base << "_ORM.png   R = Ambient Occlusion, G = Roughness, B = Metallic: "
              << "Compression Masks, sRGB off\n";
     }
+    const bool specular = !job.assets.specular.empty();
+    const bool tinted =
+        specular && job.assets.specular.channels >= 3 && !imageTraits(job.assets.specular).grey;
+    if (specular) {
+        if (Status s =
+                job.image(base + "_S.png", specularLevel(job.assets.specular), PixelFormat::UInt8);
+            !s)
+            return s;
+        note << "  " << base << "_S.png     Specular level (white = full): Compression Masks, "
+             << "sRGB off\n";
+        job.result.notes.push_back(
+            std::string("specular map written as ") + base +
+            "_S for Unreal's Specular input, times 0.5 (Unreal's default 0.5 is the map's white)" +
+            (tinted ? "; its tint is dropped (the input is one value: the strongest channel)"
+                    : ""));
+    }
     const bool parallax = info(m.technique).parallax;
     if (parallax) {
         if (Status s = job.image(job.heightName(base + "_H"), heightImage(job.assets.height, false),
@@ -100,6 +117,10 @@ Status writeUnreal(ExportJob& job) {
     else
         note << "  Roughness = " << shortestDecimal(m.roughness)
              << ", Metallic = " << shortestDecimal(m.metallic) << "\n";
+    if (specular)
+        note << "  Specular <- " << base
+             << "_S R x 0.5 (a Multiply node: the default 4% reflectance is the map's white)"
+             << (tinted ? "; the file's tint is dropped, Specular is one value" : "") << "\n";
     return job.text(job.stem + "_Unreal.txt", note.str());
 }
 
@@ -163,6 +184,13 @@ Status writeUnity(ExportJob& job) {
             return s;
         note << "  " << job.heightName(base + "_Height")
              << "              sRGB off, white = high\n";
+    }
+    if (!job.assets.specular.empty()) {
+        const char* why = "Unity's metallic shaders (Standard, URP and HDRP Lit) have no specular "
+                          "level map; its specular maps belong to the Specular workflow, where the "
+                          "map is the F0 colour in place of metallic";
+        note << "  (the material's specular map is not exported: " << why << ")\n";
+        job.result.notes.push_back(std::string("specular map not exported: ") + why);
     }
     note << "\nEvery texture: Wrap Mode = " << (m.wrap == WrapMode::Repeat ? "Repeat" : "Clamp")
          << ". Material Tiling = (" << shortestDecimal(m.tiling) << ", "

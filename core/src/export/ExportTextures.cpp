@@ -38,6 +38,20 @@ Image coneImage(const HeightField& field, const ConeMap& cone, int bits) {
     return image;
 }
 
+Image specularLevel(const Image& specular) {
+    Image out(specular.width, specular.height, 1);
+    const int colours = specular.channels >= 3 ? 3 : 1; // grey + alpha: the grey
+    for (int y = 0; y < specular.height; ++y) {
+        for (int x = 0; x < specular.width; ++x) {
+            float level = specular.at(x, y, 0);
+            for (int c = 1; c < colours; ++c)
+                level = std::max(level, specular.at(x, y, c));
+            out.at(x, y, 0) = level;
+        }
+    }
+    return out;
+}
+
 Image resample(const Image& image, int width, int height, WrapMode wrap) {
     if (image.width == width && image.height == height)
         return image;

@@ -23,6 +23,10 @@ Image normalImage(const Image& normals, NormalGreen from, NormalGreen to);
 // kept) so a stored cone is never wider than the baked one (docs/conventions.md §4).
 Image coneImage(const HeightField& field, const ConeMap& cone, int bits);
 
+// A specular map as one level a texel: a grey file's value, a coloured one's strongest channel
+// (as KHR_materials_specular turns a colour into a strength).
+Image specularLevel(const Image& specular);
+
 // Bilinear resampling between texel centres, with the material's wrap mode at the edges.
 Image resample(const Image& image, int width, int height, WrapMode wrap);
 

@@ -153,6 +153,19 @@ Result<ExportResult> exportMaterial(const Material& material, const std::string&
     ExportResult result;
     if (!resolved->note.empty())
         result.notes.push_back(resolved->note);
+    if (!material.heightDerivedFrom.empty())
+        result.notes.push_back("the height map was derived from the normal map " +
+                               material.heightDerivedFrom +
+                               " by integrating its slopes: a guess at the relief, not a measured "
+                               "one");
+    if (material.heightRange && !assets->height.empty()) {
+        const HeightRange r = *material.heightRange;
+        result.notes.push_back("the height map's file values from " +
+                               exporter::formatDecimal(r.lo) + " to " +
+                               exporter::formatDecimal(r.hi) +
+                               " are written as 0 to 1, as engines read heights; the height "
+                               "scale is the depth of that whole range");
+    }
     exporter::ExportJob job{resolved->material,
                             options,
                             std::move(*assets),

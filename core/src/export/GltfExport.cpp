@@ -6,6 +6,7 @@
 #include "ExportTextures.h"
 #include "io/ShortestDecimal.h"
 #include "parallax/Version.h"
+#include "parallax/material/MapContent.h"
 #include "parallax/material/MaterialFile.h"
 
 #include <array>
@@ -81,6 +82,21 @@ struct PlaneMesh {
     }
 };
 
+// KHR_materials_specular's texture: a grey map is the strength (read from A), a coloured one the
+// F0 colour (RGB, sRGB); RGB holds the file's colour in both, so the texture looks like the map.
+Image specularTexture(const Image& specular, bool grey) {
+    const Image level = specularLevel(specular);
+    Image out(specular.width, specular.height, 4);
+    for (int y = 0; y < specular.height; ++y) {
+        for (int x = 0; x < specular.width; ++x) {
+            for (int c = 0; c < 3; ++c)
+                out.at(x, y, c) = grey ? level.at(x, y, 0) : specular.at(x, y, c);
+            out.at(x, y, 3) = grey ? level.at(x, y, 0) : 1.0f;
+        }
+    }
+    return out;
+}
+
 } // namespace
 
 Status writeGltf(ExportJob& job) {
@@ -123,12 +139,32 @@ Status writeGltf(ExportJob& job) {
         material["normalTexture"] = texture(name);
     }
 
+    // The specular map: white is glTF's default reflection (F0 0.04) either way.
+    std::string specularName;
+    if (!job.assets.specular.empty()) {
+        const bool grey = job.assets.specular.channels < 3 || imageTraits(job.assets.specular).grey;
+        specularName = job.stem + "_specular.png";
+        if (Status s = job.image(specularName, specularTexture(job.assets.specular, grey),
+                                 PixelFormat::UInt8, !grey);
+            !s)
+            return s;
+        material["extensions"]["KHR_materials_specular"] = {
+            {grey ? "specularTexture" : "specularColorTexture", texture(specularName)}};
+        job.result.notes.push_back(
+            std::string("specular map written as KHR_materials_specular's ") +
+            (grey ? "specularTexture (the strength, in alpha)"
+                  : "specularColorTexture (the F0 colour, sRGB)") +
+            ": white is glTF's default reflection");
+    }
+
     // The parallax settings: the project's own material, maps renamed to the exported files.
     Material extras = m;
+    extras.surface = {}; // the maps below are written one a file, as the material reads them
     extras.maps = {};
     extras.heightChannel = HeightChannel::Red;
     extras.heightIsDepth = false;
     extras.normalGreen = NormalGreen::OpenGL;
+    extras.heightRange.reset(); // the height map below is written as 0 to 1
     if (info(m.technique).parallax) {
         const std::string name = job.heightName(job.stem + "_height");
         if (Status s =
@@ -139,6 +175,7 @@ Status writeGltf(ExportJob& job) {
     }
     extras.maps.albedo = pbr.contains("baseColorTexture") ? job.stem + "_basecolor.png" : "";
     extras.maps.normal = material.contains("normalTexture") ? job.stem + "_normal.png" : "";
+    extras.maps.specular = specularName;
     // The material's own occlusion, roughness and metallic maps, one file each as the material
     // reads them (the packed ORM is glTF's): without them, exporting the extras again would lose
     // them.
@@ -186,6 +223,8 @@ Status writeGltf(ExportJob& job) {
         {"bufferViews", plane.bufferViews},
         {"accessors", plane.accessors},
     };
+    if (!specularName.empty())
+        gltf["extensionsUsed"] = Json::array({"KHR_materials_specular"});
     if (!textures.empty()) {
         gltf["samplers"] = {
             {{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", wrap}, {"wrapT", wrap}}};

@@ -127,6 +127,9 @@ Status writeGodot(ExportJob& job) {
     if (m.selfShadow)
         job.result.notes.push_back("self-shadowing is not exported: Godot's StandardMaterial3D "
                                    "has no parallax self-shadow");
+    if (!job.assets.specular.empty())
+        job.result.notes.push_back("specular map not exported: Godot's StandardMaterial3D has a "
+                                   "specular value (metallic_specular), no specular texture");
     props << "uv1_scale = Vector3(" << real(shortestDecimal(m.tiling)) << ", "
           << real(shortestDecimal(m.tiling)) << ", 1.0)\n"
           << "texture_repeat = " << (m.wrap == WrapMode::Repeat ? "true" : "false") << "\n";

@@ -63,9 +63,11 @@ Status writePackage(ExportJob& job) {
     const Material& m = job.material;
     const MapSet used = mapsUsed(m);
     Material out = m; // the package's own material: same settings, its own map files
+    out.surface = {}; // occlusion, roughness and metallic are written one map a file
     out.maps = {};
     out.heightChannel = HeightChannel::Red;
     out.heightIsDepth = false; // the height map is written white = high
+    out.heightRange.reset();   // ... and from 0 to 1
     out.normalGreen = job.options.packageGreen;
     std::vector<std::pair<std::string, std::string>> files;
     auto add = [&](const std::string& name, const std::string& what) {
@@ -127,6 +129,10 @@ Status writePackage(ExportJob& job) {
         *linear[i].second = name;
         add(name, std::string(linearNames[i]) + ", 8-bit linear");
     }
+
+    if (!m.maps.specular.empty())
+        job.result.notes.push_back("specular map not in the package: its shader does not read "
+                                   "one (the glTF and Unreal exports carry it)");
 
     const std::string materialName = job.stem + ".json";
     if (Status s = job.text(materialName, materialToJson(out)); !s)

@@ -29,16 +29,23 @@ float luminance(const Image& image, int x, int y) {
     return 0.2126f * image.at(x, y, 0) + 0.7152f * image.at(x, y, 1) + 0.0722f * image.at(x, y, 2);
 }
 
-std::string rangeText(float lo, float hi) {
+std::string valueText(float value) {
     std::ostringstream text;
-    text << "[" << lo << ", " << hi << "]";
+    text << value;
     return text.str();
+}
+
+std::string rangeText(float lo, float hi) {
+    return "[" + valueText(lo) + ", " + valueText(hi) + "]";
 }
 
 } // namespace
 
-Result<HeightField> heightFieldFromImage(Image image, const HeightLoadOptions& options,
-                                         const std::string& source) {
+namespace {
+
+// The requested channel of `image` as a field, values as stored.
+Result<HeightField> extractChannel(Image image, const HeightLoadOptions& options,
+                                   const std::string& source) {
     if (image.empty())
         return fileError(source, "the image has zero size");
     const int n = image.channels;
@@ -86,22 +93,83 @@ Result<HeightField> heightFieldFromImage(Image image, const HeightLoadOptions& o
                 field.at(x, y) = luma ? luminance(image, x, y) : image.at(x, y, channel);
         }
     }
+    return field;
+}
 
+// h = (value - lo) / (hi - lo), in double so that lo and hi land on 0 and 1 exactly.
+void applyRange(HeightField& field, HeightRange range) {
+    const double lo = range.lo, span = static_cast<double>(range.hi) - lo;
+    for (float& h : field.texels)
+        h = static_cast<float>((h - lo) / span);
+}
+
+void invert(HeightField& field) {
+    for (float& h : field.texels)
+        h = 1.0f - h;
+}
+
+bool within(float lo, float hi, HeightRange range) {
+    return lo >= range.lo && hi <= range.hi;
+}
+
+} // namespace
+
+Result<HeightField> heightFieldFromImage(Image image, const HeightLoadOptions& options,
+                                         const std::string& source) {
+    Result<HeightField> extracted = extractChannel(std::move(image), options, source);
+    if (!extracted)
+        return extracted.error();
+    HeightField field = std::move(*extracted);
     const float lo = field.minHeight();
     const float hi = field.maxHeight();
+    if (options.range) {
+        if (!within(lo, hi, *options.range))
+            return fileError(source, "height values span " + rangeText(lo, hi) +
+                                         ", outside the material's height range " +
+                                         rangeText(options.range->lo, options.range->hi) +
+                                         ": it is not the file the range was recorded from; "
+                                         "import it again, or correct /height/range");
+        applyRange(field, *options.range);
+    }
     if (options.normalize) {
-        const float span = hi - lo;
+        const float a = field.minHeight(), b = field.maxHeight();
+        const float span = b - a;
         for (float& h : field.texels)
-            h = span > 0.0f ? (h - lo) / span : 0.0f;
-    } else if (lo < 0.0f || hi > 1.0f) {
+            h = span > 0.0f ? (h - a) / span : 0.0f;
+    } else if (!options.range && (lo < 0.0f || hi > 1.0f)) {
         return fileError(source, "height values span " + rangeText(lo, hi) +
-                                     ", outside [0, 1]; remap it to [0, 1] with --normalize");
+                                     ", outside [0, 1]: give the material the file's range "
+                                     "(\"height\": {\"range\": [lo, hi]}; import does), or "
+                                     "remap it to [0, 1] with --normalize");
     }
-    if (options.invert) {
-        for (float& h : field.texels)
-            h = 1.0f - h;
-    }
+    if (options.invert)
+        invert(field);
     return field;
+}
+
+Result<FittedHeight> fitHeightField(Image image, const HeightLoadOptions& options,
+                                    const std::string& source) {
+    Result<HeightField> extracted = extractChannel(std::move(image), options, source);
+    if (!extracted)
+        return extracted.error();
+    FittedHeight out;
+    out.field = std::move(*extracted);
+    const float lo = out.field.minHeight();
+    const float hi = out.field.maxHeight();
+    if (options.range && within(lo, hi, *options.range)) {
+        out.range = options.range; // the material's own, still right for the file
+    } else if (!within(lo, hi, HeightRange{})) {
+        if (!(hi > lo))
+            return fileError(source, "every height texel holds " + valueText(lo) +
+                                         ", outside [0, 1]: one value gives no range to read a "
+                                         "relief by");
+        out.range = HeightRange{lo, hi};
+    }
+    if (out.range)
+        applyRange(out.field, *out.range);
+    if (options.invert)
+        invert(out.field);
+    return out;
 }
 
 Result<HeightField> loadHeightField(const std::string& path, const HeightLoadOptions& options) {
@@ -111,6 +179,16 @@ Result<HeightField> loadHeightField(const std::string& path, const HeightLoadOpt
     if (!image)
         return image.error();
     return heightFieldFromImage(std::move(*image), options, path);
+}
+
+Result<FittedHeight> loadHeightFieldFitted(const std::string& path,
+                                           const HeightLoadOptions& options) {
+    ImageReadOptions read;
+    read.maxSide = options.allowLarge ? (1 << 30) : 16384;
+    Result<Image> image = readImage(path, read);
+    if (!image)
+        return image.error();
+    return fitHeightField(std::move(*image), options, path);
 }
 
 } // namespace px

@@ -1,5 +1,7 @@
 #include "parallax/material/MapKind.h"
 
+#include "parallax/material/MapFileName.h"
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -24,6 +26,8 @@ std::string_view mapKey(MapKind kind) {
         return "roughness";
     case MapKind::Metallic:
         return "metallic";
+    case MapKind::Specular:
+        return "specular";
     }
     return "";
 }
@@ -46,6 +50,8 @@ std::string_view mapTitle(MapKind kind) {
         return "Roughness";
     case MapKind::Metallic:
         return "Metallic";
+    case MapKind::Specular:
+        return "Specular";
     }
     return "";
 }
@@ -68,6 +74,8 @@ std::string& mapPath(MaterialMaps& maps, MapKind kind) {
         return maps.roughness;
     case MapKind::Metallic:
         return maps.metallic;
+    case MapKind::Specular:
+        return maps.specular;
     }
     return maps.albedo;
 }
@@ -78,64 +86,50 @@ const std::string& mapPath(const MaterialMaps& maps, MapKind kind) {
 
 namespace {
 
-struct Suffix {
-    std::string_view text;
-    MapKind kind;
-    bool depth;
-};
-
-// Longest first, so "_relaxed_cone" is not read as "_cone" and "_normal" not as "_n".
-constexpr Suffix kSuffixes[] = {
-    {"relaxed_cone", MapKind::RelaxedCone, false},
-    {"relaxed-cone", MapKind::RelaxedCone, false},
-    {"relaxedcone", MapKind::RelaxedCone, false},
-    {"displacement", MapKind::Height, false},
-    {"basecolour", MapKind::Albedo, false},
-    {"base_color", MapKind::Albedo, false},
-    {"basecolor", MapKind::Albedo, false},
-    {"occlusion", MapKind::Ao, false},
-    {"roughness", MapKind::Roughness, false},
-    {"metallic", MapKind::Metallic, false},
-    {"diffuse", MapKind::Albedo, false},
-    {"albedo", MapKind::Albedo, false},
-    {"colour", MapKind::Albedo, false},
-    {"normal", MapKind::Normal, false},
-    {"height", MapKind::Height, false},
-    {"color", MapKind::Albedo, false},
-    {"depth", MapKind::Height, true},
-    {"rcone", MapKind::RelaxedCone, false},
-    {"cone", MapKind::Cone, false},
-    {"disp", MapKind::Height, false},
-    {"nrm", MapKind::Normal, false},
-    {"ao", MapKind::Ao, false},
-    {"n", MapKind::Normal, false},
-    {"h", MapKind::Height, false},
-};
-
 std::string lower(std::string text) {
     std::transform(text.begin(), text.end(), text.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return text;
 }
 
-bool isSeparator(char c) {
-    return c == '_' || c == '-' || c == '.' || c == ' ';
+std::optional<MapKind> kindOf(MapRole role) {
+    switch (role) {
+    case MapRole::Albedo:
+        return MapKind::Albedo;
+    case MapRole::Height:
+    case MapRole::Depth:
+    case MapRole::Bump:
+        return MapKind::Height;
+    case MapRole::Normal:
+    case MapRole::NormalGloss:
+        return MapKind::Normal;
+    case MapRole::Roughness:
+        return MapKind::Roughness;
+    case MapRole::Metallic:
+        return MapKind::Metallic;
+    case MapRole::Ao:
+        return MapKind::Ao;
+    case MapRole::Cone:
+        return MapKind::Cone;
+    case MapRole::RelaxedCone:
+        return MapKind::RelaxedCone;
+    case MapRole::Specular:
+        return MapKind::Specular;
+    default:
+        return std::nullopt; // packed, inverted or unused: only a set's import reads them
+    }
 }
 
 } // namespace
 
 std::optional<SuffixMatch> mapKindFromFileName(const std::string& fileName) {
-    const std::string original = std::filesystem::path(fileName).stem().string();
-    const std::string stem = lower(original);
-    for (const Suffix& s : kSuffixes) {
-        if (stem.size() < s.text.size() || !stem.ends_with(s.text))
-            continue;
-        // The suffix must be a whole word: "wall_disp", "disp", not "grasp" for "_sp".
-        const std::size_t start = stem.size() - s.text.size();
-        if (start == 0 || isSeparator(stem[start - 1]))
-            return SuffixMatch{s.kind, s.depth, original.substr(0, start == 0 ? 0 : start - 1)};
-    }
-    return std::nullopt;
+    const NameReading r = readMapFileName(fileName).front();
+    if (!r.tag || r.glued)
+        return std::nullopt;
+    const std::optional<MapKind> kind = kindOf(r.tag->role);
+    if (!kind)
+        return std::nullopt;
+    return SuffixMatch{*kind, r.tag->role == MapRole::Depth, r.stem};
 }
 
 bool isImageFileName(const std::string& fileName) {

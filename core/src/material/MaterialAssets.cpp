@@ -19,6 +19,7 @@ MapSet mapsPresent(const MaterialMaps& maps) {
     set.ao = !maps.ao.empty();
     set.roughness = !maps.roughness.empty();
     set.metallic = !maps.metallic.empty();
+    set.specular = !maps.specular.empty();
     return set;
 }
 
@@ -65,6 +66,24 @@ Image loadImage(const std::string& file, int minChannels, const char* what,
         return {};
     }
     return std::move(*image);
+}
+
+// An occlusion, roughness or metallic map: as stored, or the one channel a packed file holds it
+// in (inverted for gloss), so everything downstream reads channel 0 as before.
+Image loadSurface(const std::string& file, HeightChannel channel, bool invert, const char* what,
+                  const AssetLoadOptions& options, Problems& problems) {
+    Image image = loadImage(file, 1, what, options, problems);
+    if (image.empty() || (channel == HeightChannel::Red && !invert))
+        return image;
+    HeightLoadOptions pick;
+    pick.channel = channel;
+    pick.invert = invert;
+    Result<HeightField> one = heightFieldFromImage(std::move(image), pick, file);
+    if (!one) {
+        problems.add(one.error().message);
+        return {};
+    }
+    return one->toImage();
 }
 
 // A cone map file: R = height (checked against the height map), G = sqrt(cone ratio).
@@ -133,6 +152,7 @@ Result<MaterialAssets> loadMaterialAssets(const Material& m, const std::string& 
             load.invert = m.heightIsDepth;
             load.allowLarge = options.allowLarge;
             load.normalize = options.normalize;
+            load.range = m.heightRange;
             Result<HeightField> field = loadHeightField(file(m.maps.height), load);
             if (field)
                 assets.height = std::move(*field);
@@ -151,11 +171,15 @@ Result<MaterialAssets> loadMaterialAssets(const Material& m, const std::string& 
         assets.relaxedCone =
             loadCone(file(m.maps.relaxedCone), ConeKind::Relaxed, assets.height, options, problems);
     if (which.ao && !m.maps.ao.empty())
-        assets.ao = loadImage(file(m.maps.ao), 1, "AO map", options, problems);
+        assets.ao = loadSurface(file(m.maps.ao), m.surface.ao, false, "AO map", options, problems);
     if (which.roughness && !m.maps.roughness.empty())
-        assets.roughness = loadImage(file(m.maps.roughness), 1, "roughness map", options, problems);
+        assets.roughness = loadSurface(file(m.maps.roughness), m.surface.roughness, m.surface.gloss,
+                                       "roughness map", options, problems);
     if (which.metallic && !m.maps.metallic.empty())
-        assets.metallic = loadImage(file(m.maps.metallic), 1, "metallic map", options, problems);
+        assets.metallic = loadSurface(file(m.maps.metallic), m.surface.metallic, false,
+                                      "metallic map", options, problems);
+    if (which.specular && !m.maps.specular.empty())
+        assets.specular = loadImage(file(m.maps.specular), 1, "specular map", options, problems);
 
     if (!problems.text.empty())
         return Error{problems.text};

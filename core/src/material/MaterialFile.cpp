@@ -3,6 +3,7 @@
 #include "parallax/material/MaterialFile.h"
 
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/material/MapKind.h"
 
 #include <filesystem>
 
@@ -57,14 +58,8 @@ MaterialMaps rebaseMapPaths(const MaterialMaps& maps, const std::string& fromFil
         return relative.empty() ? file.generic_string() : relative.generic_string();
     };
     MaterialMaps out;
-    out.albedo = rebase(maps.albedo);
-    out.height = rebase(maps.height);
-    out.normal = rebase(maps.normal);
-    out.cone = rebase(maps.cone);
-    out.relaxedCone = rebase(maps.relaxedCone);
-    out.ao = rebase(maps.ao);
-    out.roughness = rebase(maps.roughness);
-    out.metallic = rebase(maps.metallic);
+    for (MapKind kind : kAllMapKinds)
+        mapPath(out, kind) = rebase(mapPath(maps, kind));
     return out;
 }
 

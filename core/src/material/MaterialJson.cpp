@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -114,6 +115,23 @@ public:
             out = static_cast<int>(d);
     }
 
+    // [lo, hi]: two finite numbers (validateMaterial checks lo < hi).
+    void range(const json& object, const std::string& pointer, const char* key,
+               std::optional<HeightRange>& out) {
+        const json* v = member(object, key);
+        if (!v)
+            return;
+        auto finite = [](const json& n) {
+            return n.is_number() && std::isfinite(n.get<double>()) &&
+                   std::abs(n.get<double>()) <= std::numeric_limits<float>::max();
+        };
+        if (v->is_array() && v->size() == 2 && finite((*v)[0]) && finite((*v)[1]))
+            out = HeightRange{(*v)[0].get<float>(), (*v)[1].get<float>()};
+        else
+            add(pointer + "/" + key,
+                "expected [lo, hi], the file values for heights 0 and 1, got " + describe(*v));
+    }
+
     template <typename Enum, typename Parse>
     void enumeration(const json& object, const std::string& pointer, const char* key, Parse parse,
                      std::span<const std::string_view> names, Enum& out) {
@@ -184,13 +202,13 @@ bool readHeader(const json& root, Reader& r) {
 
 void readBody(const json& root, Reader& r, Material& m) {
     r.object(root, "",
-             {"format", "version", "name", "maps", "height", "wrap", "tiling", "technique",
-              "normal", "shadow", "lighting"});
+             {"format", "version", "name", "maps", "surface", "height", "wrap", "tiling",
+              "technique", "normal", "shadow", "lighting"});
     r.string(root, "", "name", m.name);
     if (const json* maps = r.member(root, "maps");
         maps && r.object(*maps, "/maps",
                          {"albedo", "height", "normal", "cone", "relaxedCone", "ao", "roughness",
-                          "metallic"})) {
+                          "metallic", "specular"})) {
         MaterialMaps& p = m.maps;
         for (auto [key, field] : {std::pair{"albedo", &p.albedo},
                                   {"height", &p.height},
@@ -199,18 +217,32 @@ void readBody(const json& root, Reader& r, Material& m) {
                                   {"relaxedCone", &p.relaxedCone},
                                   {"ao", &p.ao},
                                   {"roughness", &p.roughness},
-                                  {"metallic", &p.metallic}}) {
+                                  {"metallic", &p.metallic},
+                                  {"specular", &p.specular}}) {
             if (const json* v = r.member(*maps, key); v && v->is_null())
                 continue; // null = absent
             r.string(*maps, "/maps", key, *field);
         }
     }
+    if (const json* s = r.member(root, "surface");
+        s && r.object(*s, "/surface",
+                      {"aoChannel", "roughnessChannel", "metallicChannel", "roughnessIsGloss"})) {
+        r.enumeration(*s, "/surface", "aoChannel", parseHeightChannel, heightChannelNames(),
+                      m.surface.ao);
+        r.enumeration(*s, "/surface", "roughnessChannel", parseHeightChannel, heightChannelNames(),
+                      m.surface.roughness);
+        r.enumeration(*s, "/surface", "metallicChannel", parseHeightChannel, heightChannelNames(),
+                      m.surface.metallic);
+        r.boolean(*s, "/surface", "roughnessIsGloss", m.surface.gloss);
+    }
     if (const json* h = r.member(root, "height");
-        h && r.object(*h, "/height", {"channel", "invert", "scale"})) {
+        h && r.object(*h, "/height", {"channel", "invert", "scale", "range", "derivedFrom"})) {
         r.enumeration(*h, "/height", "channel", parseHeightChannel, heightChannelNames(),
                       m.heightChannel);
         r.boolean(*h, "/height", "invert", m.heightIsDepth);
         r.number(*h, "/height", "scale", kHeightScale, m.heightScale);
+        r.string(*h, "/height", "derivedFrom", m.heightDerivedFrom);
+        r.range(*h, "/height", "range", m.heightRange);
     }
     static constexpr std::string_view kWraps[] = {"repeat", "clamp"};
     r.enumeration(root, "", "wrap", parseWrapMode, kWraps, m.wrap);
@@ -339,14 +371,26 @@ std::string materialToJson(const Material& m) {
                               {"relaxedCone", &m.maps.relaxedCone},
                               {"ao", &m.maps.ao},
                               {"roughness", &m.maps.roughness},
-                              {"metallic", &m.maps.metallic}}) {
+                              {"metallic", &m.maps.metallic},
+                              {"specular", &m.maps.specular}}) {
         if (!value->empty())
             maps[key] = *value;
     }
     root["maps"] = maps;
+    // Written only where a packed file asks for it, so ordinary materials read as before.
+    if (m.surface != SurfaceChannels{})
+        root["surface"] = {{"aoChannel", toString(m.surface.ao)},
+                           {"roughnessChannel", toString(m.surface.roughness)},
+                           {"metallicChannel", toString(m.surface.metallic)},
+                           {"roughnessIsGloss", m.surface.gloss}};
     root["height"] = {{"channel", toString(m.heightChannel)},
                       {"invert", m.heightIsDepth},
                       {"scale", shortestDecimal(m.heightScale)}};
+    if (m.heightRange) // written only for a file read by its range, so others read as before
+        root["height"]["range"] = {shortestDecimal(m.heightRange->lo),
+                                   shortestDecimal(m.heightRange->hi)};
+    if (!m.heightDerivedFrom.empty())
+        root["height"]["derivedFrom"] = m.heightDerivedFrom;
     root["wrap"] = toString(m.wrap);
     root["tiling"] = shortestDecimal(m.tiling);
     if (m.autoQuality && m.autoQuality->budgetPixels && m.autoQuality->texelsPerPixel)

@@ -26,6 +26,12 @@ std::vector<MaterialProblem> validateMaterial(const Material& m, MaterialCheck c
     if (m.name.empty())
         problems.push_back({"/name", "expected a non-empty name"});
     number("/height/scale", m.heightScale, kHeightScale);
+    if (m.heightRange && !(std::isfinite(m.heightRange->lo) && std::isfinite(m.heightRange->hi) &&
+                           m.heightRange->lo < m.heightRange->hi))
+        problems.push_back({"/height/range", "expected lo < hi (the file values for heights 0 "
+                                             "and 1), got [" +
+                                                 numberText(m.heightRange->lo) + ", " +
+                                                 numberText(m.heightRange->hi) + "]"});
     number("/tiling", m.tiling, kTiling);
     integer("/technique/minLayers", m.params.minLayers, kLayers);
     integer("/technique/maxLayers", m.params.maxLayers, kLayers);

@@ -31,6 +31,7 @@ private slots:
     void packageBakesMissingConeMapRoundingDown();
     void packageNormalGreenConverted();
     void packagePacksSurfaceMapForTheShader();
+    void packedChannelsExportOneMapAFileAndDerivedHeightIsNoted();
     void gltfDescribesPlaneMaterialAndExtras();
     void gltfExtrasAlwaysAValidMaterial();
     void godotMaterialResource();
@@ -41,6 +42,8 @@ private slots:
     void neverOverwritesWithoutForce();
     void failedExportLeavesTargetAsItWas();
     void invalidMaterialRefusedBeforeWriting();
+    void specularGoesToTheEnginesThatReadIt();
+    void floatHeightByItsRangeGoesOutFromZeroToOne();
 
 private:
     std::string path(const std::string& name) const {
@@ -244,6 +247,28 @@ void ExporterTest::packagePacksSurfaceMapForTheShader() {
     QVERIFY(written.contains("bricks_orm.png"));       // for the shader's surface map
     QVERIFY(readTextFile(path("out/bricks.frag"))->find("pxOrmMap") != std::string::npos);
     QVERIFY(std::abs(read("out/bricks_orm.png").at(1, 1, 1) - 0.3f) < 1.0f / 255);
+}
+
+void ExporterTest::packedChannelsExportOneMapAFileAndDerivedHeightIsNoted() {
+    // An imported Unity mask map: roughness = 1 - alpha, occlusion from green.
+    write("src/bricks_mask.png", constant(32, 16, {0.2f, 0.5f, 0.8f, 0.3f}), PixelFormat::UInt8);
+    m_material.lighting = LightingModel::MetallicRoughness;
+    m_material.maps.roughness = m_material.maps.ao = "bricks_mask.png";
+    m_material.surface.roughness = HeightChannel::Alpha;
+    m_material.surface.gloss = true;
+    m_material.surface.ao = HeightChannel::Green;
+    m_material.heightDerivedFrom = "bricks_normal.png";
+    Result<ExportResult> result = run(ExportFormat::Package);
+    QVERIFY2(result, result ? "" : result.error().message.c_str());
+    QVERIFY(std::abs(read("out/bricks_roughness.png").at(1, 1) - 0.7f) < 1.0f / 255);
+    QVERIFY(std::abs(read("out/bricks_ao.png").at(1, 1) - 0.5f) < 1.0f / 255);
+    Result<Material> loaded = loadMaterial(path("out/bricks.json"));
+    QVERIFY(loaded && loaded->surface == SurfaceChannels{});
+    QCOMPARE(loaded->heightDerivedFrom, std::string("bricks_normal.png"));
+    bool noted = false;
+    for (const std::string& note : result->notes)
+        noted |= note.find("derived from the normal map bricks_normal.png") != std::string::npos;
+    QVERIFY(noted);
 }
 
 void ExporterTest::gltfDescribesPlaneMaterialAndExtras() {
@@ -458,6 +483,114 @@ void ExporterTest::invalidMaterialRefusedBeforeWriting() {
     QVERIFY(!result.ok());
     QVERIFY(result.error().message.find("/technique/minLayers") != std::string::npos);
     QVERIFY(!fs::exists(path("out")));
+}
+
+namespace {
+
+bool notes(const ExportResult& result, const std::string& text) {
+    return std::any_of(result.notes.begin(), result.notes.end(),
+                       [&](const std::string& n) { return n.find(text) != std::string::npos; });
+}
+
+} // namespace
+
+// A specular level (grey) and a tinted specular (colour): glTF writes KHR_materials_specular's
+// strength or colour texture, Unreal its Specular input at half (its default is 0.5), Godot,
+// Unity and the package drop it and say why.
+void ExporterTest::specularGoesToTheEnginesThatReadIt() {
+    write("src/bricks_spec.png", constant(32, 16, {0.4f}), PixelFormat::UInt8);
+    write("src/bricks_tint.png", constant(32, 16, {0.9f, 0.6f, 0.3f}), PixelFormat::UInt8, true);
+    for (const bool grey : {true, false}) {
+        m_material.maps.specular = grey ? "bricks_spec.png" : "bricks_tint.png";
+        m_options.force = true;
+        Result<ExportResult> gltf = run(ExportFormat::Gltf, "gltf");
+        QVERIFY2(gltf, gltf ? "" : gltf.error().message.c_str());
+        const nlohmann::json doc = readJson(path("gltf/bricks.gltf"));
+        QCOMPARE(doc["extensionsUsed"], nlohmann::json::array({"KHR_materials_specular"}));
+        const nlohmann::json& ext = doc["materials"][0]["extensions"]["KHR_materials_specular"];
+        const char* slot = grey ? "specularTexture" : "specularColorTexture";
+        QVERIFY2(ext.size() == 1 && ext.contains(slot), ext.dump().c_str());
+        const int texture = ext[slot]["index"].get<int>();
+        const int source = doc["textures"][texture]["source"].get<int>();
+        QCOMPARE(doc["images"][source]["uri"].get<std::string>(),
+                 std::string("bricks_specular.png"));
+        const Image written = read("gltf/bricks_specular.png");
+        QCOMPARE(written.channels, 4);
+        QVERIFY(std::abs(written.at(3, 3, 3) - (grey ? 0.4f : 1.0f)) < 1.0f / 255); // strength
+        QVERIFY(std::abs(written.at(3, 3, 1) - (grey ? 0.4f : 0.6f)) < 1.0f / 255); // colour
+        QCOMPARE(doc["materials"][0]["extras"]["parallaxStudio"]["maps"]["specular"],
+                 nlohmann::json("bricks_specular.png"));
+        QVERIFY(notes(*gltf, grey ? "specularTexture" : "specularColorTexture"));
+
+        Result<ExportResult> unreal = run(ExportFormat::Unreal, "unreal");
+        QVERIFY(unreal);
+        const Image level = read("unreal/T_bricks_S.png");
+        QCOMPARE(level.channels, 1);
+        // The strongest channel (0.9 holds 230/255 in the 8-bit source).
+        QVERIFY(std::abs(level.at(2, 2, 0) - (grey ? 0.4f : 0.9f)) < 1.0f / 255);
+        const std::string note = *readTextFile(path("unreal/bricks_Unreal.txt"));
+        QVERIFY2(note.find("Specular <- T_bricks_S R x 0.5") != std::string::npos, note.c_str());
+        QCOMPARE(note.find("tint is dropped") != std::string::npos, !grey);
+        QCOMPARE(notes(*unreal, "tint is dropped"), !grey);
+
+        for (const ExportFormat format :
+             {ExportFormat::Godot, ExportFormat::Unity, ExportFormat::Package}) {
+            const std::string out = "other" + std::to_string(int(format));
+            Result<ExportResult> other = run(format, out);
+            QVERIFY(other);
+            QVERIFY(notes(*other, format == ExportFormat::Package
+                                      ? "specular map not in the package"
+                                      : "specular map not exported"));
+            for (const QString& file : files(out))
+                QVERIFY2(!file.contains("spec", Qt::CaseInsensitive), qPrintable(file));
+        }
+        QVERIFY(!readJson(path("other0/bricks.json"))["maps"].contains("specular"));
+    }
+    // Without a specular map, no extension and no note.
+    m_material.maps.specular.clear();
+    Result<ExportResult> plain = run(ExportFormat::Gltf, "plain");
+    QVERIFY(plain && !notes(*plain, "specular"));
+    const nlohmann::json doc = readJson(path("plain/bricks.gltf"));
+    QVERIFY(!doc.contains("extensionsUsed") && !doc["materials"][0].contains("extensions"));
+}
+
+// A float height map recorded with its range: every export writes it from 0 to 1, says so, and
+// the exported materials (package, glTF extras) carry no range.
+void ExporterTest::floatHeightByItsRangeGoesOutFromZeroToOne() {
+    Image signedMap = m_height.toImage();
+    for (float& v : signedMap.pixels)
+        v = -12.5f + 40.0f * v;
+    write("src/bricks_bake.exr", signedMap, PixelFormat::Float);
+    m_material.maps.height = "bricks_bake.exr";
+    HeightRange range{signedMap.pixels[0], signedMap.pixels[0]};
+    for (const float v : signedMap.pixels) {
+        range.lo = std::min(range.lo, v);
+        range.hi = std::max(range.hi, v);
+    }
+    m_material.heightRange = range;
+    for (const ExportFormat format :
+         {ExportFormat::Package, ExportFormat::Gltf, ExportFormat::Godot, ExportFormat::Unreal,
+          ExportFormat::Unity}) {
+        const std::string out = "out" + std::to_string(int(format));
+        Result<ExportResult> result = run(format, out);
+        QVERIFY2(result, result ? "" : result.error().message.c_str());
+        QVERIFY(notes(*result, "are written as 0 to 1"));
+        const std::string height = format == ExportFormat::Unreal  ? "T_bricks_H.png"
+                                   : format == ExportFormat::Unity ? "bricks_Height.png"
+                                                                   : "bricks_height.png";
+        const Image written = read(out + "/" + height);
+        float worst = 0.0f;
+        const float lo = m_height.minHeight(), span = m_height.maxHeight() - lo;
+        for (int y = 0; y < written.height; ++y)
+            for (int x = 0; x < written.width; ++x)
+                worst = std::max(worst,
+                                 std::abs(written.at(x, y, 0) - (m_height.at(x, y) - lo) / span));
+        QVERIFY2(worst <= 1.0f / 65535 + 1e-5f, qPrintable(QString::number(worst)));
+    }
+    QVERIFY(!readJson(path("out0/bricks.json"))["height"].contains("range"));
+    QVERIFY(
+        !readJson(path("out1/bricks.gltf"))["materials"][0]["extras"]["parallaxStudio"]["height"]
+             .contains("range"));
 }
 
 QTEST_GUILESS_MAIN(ExporterTest)

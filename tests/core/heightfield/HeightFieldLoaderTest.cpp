@@ -9,6 +9,7 @@
 #include <QtTest>
 #include <cmath>
 #include <fstream>
+#include <random>
 
 using namespace px;
 
@@ -29,6 +30,10 @@ private slots:
     void outOfRangeFloat();
     void missingChannel();
     void alphaOnlyExrNeedsTheAlphaChannel();
+    void floatMapReadByItsRange_data();
+    void floatMapReadByItsRange();
+    void recordedRangeKeptWhereItFits();
+    void oneValueOutsideUnitIsRefused();
 
 private:
     std::string path(const char* name) const { return m_dir.filePath(name).toStdString(); }
@@ -162,6 +167,10 @@ void HeightFieldLoaderTest::nonFiniteTexels() {
     QVERIFY2(m.find("nan.exr") != std::string::npos, m.c_str());
     QVERIFY2(m.find("2 NaN or infinite values") != std::string::npos, m.c_str());
     QVERIFY2(m.find("(3, 1)") != std::string::npos, m.c_str());
+    // A float map read by its range refuses them the same way: no range is made of a NaN.
+    const auto fitted = loadHeightFieldFitted(file);
+    QVERIFY(!fitted.ok());
+    QCOMPARE(QString::fromStdString(fitted.error().message), QString::fromStdString(m));
 }
 
 void HeightFieldLoaderTest::tooLarge() {
@@ -227,6 +236,143 @@ void HeightFieldLoaderTest::alphaOnlyExrNeedsTheAlphaChannel() {
     const auto alpha = loadHeightField(file, load);
     QVERIFY(alpha.ok());
     QCOMPARE(alpha->at(1, 0), 0.75f);
+}
+
+namespace {
+
+// A float height map of rough noise over [lo, lo + span], `seed` choosing the noise; the ends
+// are hit exactly (a texel at each).
+Image floatRelief(float lo, float span, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    Image image(23, 17, 1);
+    for (float& v : image.pixels)
+        v = lo + span * unit(rng);
+    image.at(static_cast<int>(seed % 23), 3) = lo;
+    image.at(5, static_cast<int>(seed % 17)) = lo + span;
+    return image;
+}
+
+} // namespace
+
+// Float height maps in their makers' units: signed, large, tiny, far from 0. Each is read as
+// stored over its own [min, max], which comes back to be recorded; read again by that range it
+// gives the same heights, and by no range it is refused, never clamped.
+void HeightFieldLoaderTest::floatMapReadByItsRange_data() {
+    QTest::addColumn<float>("lo");
+    QTest::addColumn<float>("span");
+    QTest::addColumn<bool>("ranged");
+    QTest::addColumn<unsigned>("seed");
+    for (unsigned seed : {1u, 2u, 3u}) {
+        const float f = 1.0f + 0.37f * static_cast<float>(seed);
+        QTest::addRow("signed-%u", seed) << -0.6f * f << 1.1f * f << true << seed;
+        QTest::addRow("centimetres-%u", seed) << 120.0f * f << 3500.0f * f << true << seed;
+        QTest::addRow("tiny-signed-%u", seed) << -2e-5f * f << 5e-5f * f << true << seed;
+        QTest::addRow("far-from-zero-%u", seed) << 1000.0f * f << 0.25f * f << true << seed;
+        QTest::addRow("above-one-%u", seed) << 0.2f * f << 1.5f << true << seed;
+        QTest::addRow("within-unit-%u", seed) << 0.1f * f << 0.5f << false << seed;
+    }
+}
+
+void HeightFieldLoaderTest::floatMapReadByItsRange() {
+    QFETCH(float, lo);
+    QFETCH(float, span);
+    QFETCH(bool, ranged);
+    QFETCH(unsigned, seed);
+    const Image image = floatRelief(lo, span, seed);
+    const std::string file = path("relief.exr");
+    ImageWriteOptions write;
+    write.format = PixelFormat::Float;
+    QVERIFY(writeImage(file, image, write).ok());
+    float min = image.pixels[0], max = image.pixels[0];
+    for (float v : image.pixels) {
+        min = std::min(min, v);
+        max = std::max(max, v);
+    }
+
+    const auto fitted = loadHeightFieldFitted(file);
+    QVERIFY2(fitted.ok(), fitted.ok() ? "" : fitted.error().message.c_str());
+    QCOMPARE(fitted->range.has_value(), ranged);
+    if (!ranged) { // within [0, 1]: as stored, like a PNG
+        for (std::size_t i = 0; i < image.pixels.size(); ++i)
+            QCOMPARE(fitted->field.texels[i], image.pixels[i]);
+        return;
+    }
+    QCOMPARE(fitted->range->lo, min);
+    QCOMPARE(fitted->range->hi, max);
+    QCOMPARE(fitted->field.minHeight(), 0.0f);
+    QCOMPARE(fitted->field.maxHeight(), 1.0f);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        const double want = (double(image.pixels[i]) - min) / (double(max) - min);
+        worst = std::max(worst, std::abs(fitted->field.texels[i] - want));
+    }
+    QVERIFY2(worst <= 1e-6, qPrintable(QString("off by %1").arg(worst)));
+
+    HeightLoadOptions byRange;
+    byRange.range = fitted->range;
+    byRange.invert = true;
+    const auto again = loadHeightField(file, byRange);
+    QVERIFY(again.ok());
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        QCOMPARE(again->texels[i], 1.0f - fitted->field.texels[i]);
+    const auto refused = loadHeightField(file);
+    QVERIFY(!refused.ok());
+    QVERIFY2(refused.error().message.starts_with(file + ": height values span ") &&
+                 refused.error().message.find("\"range\": [lo, hi]") != std::string::npos,
+             refused.error().message.c_str());
+}
+
+// The material's own range is kept while the file's values lie within it (a hand-set, wider
+// range means what it says); a file that left it is refitted by import and refused by loading.
+void HeightFieldLoaderTest::recordedRangeKeptWhereItFits() {
+    const Image image = floatRelief(-3.0f, 5.0f, 7); // [-3, 2]
+    const std::string file = path("signed.exr");
+    ImageWriteOptions write;
+    write.format = PixelFormat::Float;
+    QVERIFY(writeImage(file, image, write).ok());
+    HeightLoadOptions wide;
+    wide.range = HeightRange{-4.0f, 4.0f};
+    const auto kept = loadHeightFieldFitted(file, wide);
+    QVERIFY(kept.ok());
+    QVERIFY(kept->range == wide.range);
+    QCOMPARE(kept->field.minHeight(), 0.125f); // (-3 + 4) / 8
+    QCOMPARE(kept->field.maxHeight(), 0.75f);  // (2 + 4) / 8
+
+    HeightLoadOptions narrow;
+    narrow.range = HeightRange{-1.0f, 1.0f};
+    const auto refitted = loadHeightFieldFitted(file, narrow);
+    QVERIFY(refitted.ok());
+    QVERIFY((refitted->range == HeightRange{-3.0f, 2.0f}));
+    const auto refused = loadHeightField(file, narrow);
+    QVERIFY(!refused.ok());
+    QCOMPARE(QString::fromStdString(refused.error().message),
+             QString::fromStdString(file + ": height values span [-3, 2], outside the material's "
+                                           "height range [-1, 1]: it is not the file the range "
+                                           "was recorded from; import it again, or correct "
+                                           "/height/range"));
+}
+
+void HeightFieldLoaderTest::oneValueOutsideUnitIsRefused() {
+    const std::string file = path("flat.exr");
+    ImageWriteOptions write;
+    write.format = PixelFormat::Float;
+    Image image(6, 5, 1);
+    for (float& v : image.pixels)
+        v = 5.5f;
+    QVERIFY(writeImage(file, image, write).ok());
+    const auto refused = loadHeightFieldFitted(file);
+    QVERIFY(!refused.ok());
+    QCOMPARE(QString::fromStdString(refused.error().message),
+             QString::fromStdString(file + ": every height texel holds 5.5, outside [0, 1]: one "
+                                           "value gives no range to read a relief by"));
+    // One value within [0, 1] is a flat relief, read as stored.
+    for (float& v : image.pixels)
+        v = 0.25f;
+    QVERIFY(writeImage(file, image, write).ok());
+    const auto flat = loadHeightFieldFitted(file);
+    QVERIFY(flat.ok() && !flat->range);
+    QCOMPARE(flat->field.maxHeight(), 0.25f);
 }
 
 QTEST_APPLESS_MAIN(HeightFieldLoaderTest)

@@ -44,9 +44,11 @@ namespace {
 Material everyFieldChanged() {
     Material m;
     m.name = "cobbles \"quoted\" ü";
-    m.maps = {"a/albedo.png", "h.exr", "n.png", "c.png", "rc.png", "ao.png", "r.png", "m.png"};
+    m.maps = {"a/albedo.png", "h.exr", "n.png", "c.png", "rc.png",
+              "ao.png",       "r.png", "m.png", "s.png"};
     m.heightChannel = HeightChannel::Luminance;
     m.heightIsDepth = true;
+    m.heightRange = HeightRange{-0.1f, 23.75f};
     m.heightScale = 0.125f;
     m.wrap = WrapMode::Clamp;
     m.tiling = 3.5f;
@@ -61,6 +63,8 @@ Material everyFieldChanged() {
     m.metallic = 1.0f;
     m.specular = 0.75f;
     m.shininess = 64.0f;
+    m.surface = {HeightChannel::Green, HeightChannel::Alpha, HeightChannel::Blue, true};
+    m.heightDerivedFrom = "rock_nrm.png";
     return m;
 }
 
@@ -74,8 +78,10 @@ void compareMaterials(const Material& a, const Material& b) {
     QCOMPARE(a.maps.ao, b.maps.ao);
     QCOMPARE(a.maps.roughness, b.maps.roughness);
     QCOMPARE(a.maps.metallic, b.maps.metallic);
+    QCOMPARE(a.maps.specular, b.maps.specular);
     QCOMPARE(int(a.heightChannel), int(b.heightChannel));
     QCOMPARE(a.heightIsDepth, b.heightIsDepth);
+    QVERIFY(a.heightRange == b.heightRange);
     QCOMPARE(a.heightScale, b.heightScale);
     QCOMPARE(int(a.wrap), int(b.wrap));
     QCOMPARE(a.tiling, b.tiling);
@@ -94,6 +100,8 @@ void compareMaterials(const Material& a, const Material& b) {
     QCOMPARE(a.metallic, b.metallic);
     QCOMPARE(a.specular, b.specular);
     QCOMPARE(a.shininess, b.shininess);
+    QVERIFY(a.surface == b.surface);
+    QCOMPARE(a.heightDerivedFrom, b.heightDerivedFrom);
 }
 
 const char* kHeader = R"("format": "parallax-studio-material", "version": 1)";
@@ -130,6 +138,18 @@ void MaterialFileTest::floatsWrittenShort() {
     const std::string json = materialToJson(m);
     QVERIFY2(json.find("\"scale\": 0.05") != std::string::npos, json.c_str());
     QVERIFY2(json.find("0.0500000") == std::string::npos, json.c_str());
+    // The import's packed channels and derived height are written only when set.
+    QVERIFY2(json.find("surface") == std::string::npos, json.c_str());
+    QVERIFY2(json.find("derivedFrom") == std::string::npos, json.c_str());
+    // So are a float height map's range and a specular map.
+    QVERIFY2(json.find("range") == std::string::npos, json.c_str());
+    QVERIFY2(json.find("\"specular\": \"") == std::string::npos, json.c_str());
+    m.heightRange = HeightRange{-1.5f, 0.1f};
+    m.maps.specular = "s.png";
+    const std::string ranged = materialToJson(m);
+    QVERIFY2(ranged.find("\"range\": [\n      -1.5,\n      0.1\n    ]") != std::string::npos,
+             ranged.c_str());
+    QVERIFY2(ranged.find("\"specular\": \"s.png\"") != std::string::npos, ranged.c_str());
     QVERIFY(json.rfind("{\n  \"format\": \"parallax-studio-material\",\n  \"version\": 1,", 0) ==
             0);
 }
@@ -197,6 +217,12 @@ void MaterialFileTest::problems_data() {
         << body(R"("technique": {"name": "pom", "maxLayer": 9})")
         << "m.json: /technique/maxLayer: unknown key (known here: name, minLayers,";
     QTest::newRow("slash in key") << body(R"("a/b~c": 1)") << "m.json: /a~1b~0c: unknown key";
+    QTest::newRow("surface channel")
+        << body(R"("surface": {"roughnessChannel": "purple"})")
+        << R"(m.json: /surface/roughnessChannel: expected one of "red", "green", "blue", "alpha", "luminance", got "purple")";
+    QTest::newRow("surface gloss")
+        << body(R"("surface": {"roughnessIsGloss": 1})")
+        << "m.json: /surface/roughnessIsGloss: expected true or false, got 1";
     QTest::newRow("name type") << body(R"("name": 5)") << "m.json: /name: expected a string, got 5";
     QTest::newRow("name empty") << body(R"("name": "")")
                                 << "m.json: /name: expected a non-empty name";
@@ -224,6 +250,32 @@ void MaterialFileTest::problems_data() {
     QTest::newRow("scale string")
         << body(R"("height": {"scale": "big"})")
         << R"(m.json: /height/scale: expected a number 0..100, got "big")";
+    QTest::newRow("range type")
+        << body(R"("height": {"range": 2})")
+        << "m.json: /height/range: expected [lo, hi], the file values for heights 0 and 1, got 2";
+    QTest::newRow("range length")
+        << body(R"("height": {"range": [0, 1, 2]})")
+        << "m.json: /height/range: expected [lo, hi], the file values for heights 0 and 1, got an "
+           "array";
+    QTest::newRow("range text")
+        << body(R"("height": {"range": ["0", 1]})")
+        << "m.json: /height/range: expected [lo, hi], the file values for heights 0 and 1, got an "
+           "array";
+    QTest::newRow("range beyond float")
+        << body(R"("height": {"range": [0, 1e300]})")
+        << "m.json: /height/range: expected [lo, hi], the file values for heights 0 and 1, got an "
+           "array";
+    QTest::newRow("range reversed")
+        << body(R"("height": {"range": [3, -2]})")
+        << "m.json: /height/range: expected lo < hi (the file values for heights 0 and 1), got "
+           "[3, -2]";
+    QTest::newRow("range empty")
+        << body(R"("height": {"range": [0.5, 0.5]})")
+        << "m.json: /height/range: expected lo < hi (the file values for heights 0 and 1), got "
+           "[0.5, 0.5]";
+    QTest::newRow("specular map type")
+        << body(R"("maps": {"height": "h.png", "specular": 1})").replace(h, "")
+        << "m.json: /maps/specular: expected a string, got 1";
     QTest::newRow("wrap") << body(R"("wrap": "mirror")")
                           << R"(m.json: /wrap: expected one of "repeat", "clamp", got "mirror")";
     QTest::newRow("tiling zero") << body(R"("tiling": 0)")

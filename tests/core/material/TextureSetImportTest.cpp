@@ -1,11 +1,15 @@
-// Importing texture sets the test writes itself: every convention (height or depth, OpenGL or
-// DirectX green, albedo with or without a suffix) over several seeds is read from the data; every
-// file is assigned or listed with why; two sets are never mixed; failures name their file.
+// Importing texture sets the test writes itself: height or depth and OpenGL or DirectX green over
+// several seeds are read from the data; every file is used or listed with why; two sets are never
+// mixed; a folder with no set is refused with the report; a normal-only set gets a derived height
+// on request; failures name their file. (Naming conventions: TextureSetConventionsTest.)
 
 #include "parallax/material/TextureSetImport.h"
 
+#include "ConventionSets.h"
 #include "TextureSets.h"
+#include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/material/MaterialFile.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -27,6 +31,13 @@ bool mentions(const std::vector<SkippedFile>& list, const std::string& file,
     return std::any_of(list.begin(), list.end(), [&](const SkippedFile& s) {
         return s.path.ends_with(file) && s.why.find(why) != std::string::npos;
     });
+}
+
+std::string summaryOf(const ImportedSet& set) {
+    std::string text;
+    for (const std::string& line : importSummary(set))
+        text += line + "\n";
+    return text;
 }
 
 } // namespace
@@ -65,13 +76,12 @@ private slots:
         const Result<TextureSetPlan> plan = planTextureSet(filesOf(dir), "dir");
         QVERIFY2(plan, plan ? "" : plan.error().message.c_str());
         QCOMPARE(plan->name, spec.stem);
-        QCOMPARE(plan->assigned.size(), std::size_t(3));
-        QVERIFY(plan->ignored.empty() && plan->duplicates.empty());
-        QVERIFY(plan->find(MapKind::Albedo));
-        QCOMPARE(plan->find(MapKind::Albedo)->path, written.albedoFile);
+        QCOMPARE(plan->files.size(), std::size_t(3));
+        QVERIFY(plan->ignored.empty());
 
         const Result<ImportedSet> set = importTextureSet(*plan);
         QVERIFY2(set, set ? "" : set.error().message.c_str());
+        QCOMPARE(set->material.maps.albedo, written.albedoFile);
         QVERIFY(set->relief.fromData);
         QCOMPARE(set->material.heightIsDepth, depth);
         QCOMPARE(set->material.normalGreen, spec.green);
@@ -124,6 +134,8 @@ private slots:
         const Result<ImportedSet> set = importTextureSet(*planTextureSet(filesOf(dir), "dir"));
         QVERIFY2(set, set ? "" : set.error().message.c_str());
         QVERIFY2(!set->relief.fromData, set->relief.summary.c_str());
+        QCOMPARE(set->material.maps.normal, normal); // used as named, with a warning
+        QVERIFY(set->material.maps.height.ends_with("rock_depth.png"));
         QVERIFY(set->material.heightIsDepth);
         QVERIFY(set->relief.summary.find("do not follow") != std::string::npos);
     }
@@ -152,21 +164,52 @@ private slots:
         const Result<TextureSetPlan> plan = planTextureSet(files, "dir", "TOY_BOX");
         QVERIFY(plan);
         QCOMPARE(plan->name, std::string("toy_box"));
-        QCOMPARE(plan->assigned.size(), std::size_t(3));
-        for (const SetFile& f : plan->assigned)
+        QCOMPARE(plan->files.size(), std::size_t(3));
+        for (const SetFile& f : plan->files)
             QVERIFY2(f.path.find("toy_box") != std::string::npos, f.path.c_str());
         // Every other file is listed with why.
-        QCOMPARE(plan->assigned.size() + plan->ignored.size() + plan->duplicates.size(),
-                 files.size());
+        QCOMPARE(plan->files.size() + plan->ignored.size(), files.size());
         QVERIFY(mentions(plan->ignored, "bricks2_disp.png", "belongs to the set bricks2"));
-        QVERIFY(mentions(plan->ignored, "bricks2.png", "the albedo of the set bricks2"));
+        QVERIFY(mentions(plan->ignored, "bricks2.png", "belongs to the set bricks2"));
         QVERIFY(mentions(plan->ignored, "README.md", "not an image file"));
-        QVERIFY(mentions(plan->ignored, "wood.png", "no map suffix"));
+        QVERIFY(mentions(plan->ignored, "wood.png", "no map tag"));
+        const Result<ImportedSet> set = importTextureSet(*plan);
+        QVERIFY(set);
+        for (const std::string& path :
+             {set->material.maps.height, set->material.maps.normal, set->material.maps.albedo})
+            QVERIFY2(path.find("toy_box") != std::string::npos, path.c_str());
 
         const Result<TextureSetPlan> none = planTextureSet(files, "dir", "stones");
         QVERIFY(!none);
         QCOMPARE(QString::fromStdString(none.error().message),
                  QString("dir: holds no texture set named 'stones' (it holds bricks2, toy_box)"));
+    }
+
+    // A glued tag needs a sibling; the same name in another format (a download's BMP beside its
+    // PNG) is not one: stones.png and stones.jpg are the albedo of "stones", not the specular map
+    // of a second set "stone", and brickn.png with brickn.tga alone make no set.
+    void oneNameInTwoFormatsIsNotItsOwnSibling() {
+        QTemporaryDir dir;
+        for (const char* name : {"stones_height.png", "stones.png", "stones.jpg"})
+            QVERIFY(writeTextFile(dir.filePath(name).toStdString(), "names only"));
+        const std::vector<std::string> files = filesOf(dir);
+        QCOMPARE(textureSetNames(files), (std::vector<std::string>{"stones"}));
+        const Result<TextureSetPlan> plan = planTextureSet(files, "dir");
+        QVERIFY2(plan, plan ? "" : plan.error().message.c_str());
+        QCOMPARE(plan->files.size(), std::size_t(3));
+        QVERIFY(plan->ignored.empty());
+
+        QTemporaryDir lone;
+        for (const char* name : {"brickn.png", "brickn.tga"})
+            QVERIFY(writeTextFile(lone.filePath(name).toStdString(), "names only"));
+        QVERIFY(textureSetNames(filesOf(lone)).empty());
+        const Result<TextureSetPlan> none = planTextureSet(filesOf(lone), "lone");
+        QVERIFY(!none);
+        QVERIFY2(none.error().message.find("brickn.png: no map tag") != std::string::npos,
+                 none.error().message.c_str());
+
+        QVERIFY(writeTextFile(lone.filePath("brickz.png").toStdString(), "names only"));
+        QCOMPARE(textureSetNames(filesOf(lone)), (std::vector<std::string>{"brick"}));
     }
 
     void duplicatesAreListedAndTheSummaryNamesEveryFile() {
@@ -181,20 +224,21 @@ private slots:
         QVERIFY(writeTextFile(dir.filePath("notes.txt").toStdString(), "x"));
         const Result<TextureSetPlan> plan = planTextureSet(filesOf(dir), "dir");
         QVERIFY(plan);
-        // The suffixed albedo wins over the one named after the set; the first height file wins.
-        QCOMPARE(plan->find(MapKind::Albedo)->path, dir.filePath("rock_color.png").toStdString());
-        QCOMPARE(plan->find(MapKind::Height)->path, written.heightFile);
-        QVERIFY(mentions(plan->duplicates, "rock.png", "a second albedo map: rock_color.png"));
-        QVERIFY(
-            mentions(plan->duplicates, "rock_height.png", "a second height map: rock_disp.png"));
         const Result<ImportedSet> set = importTextureSet(*plan);
         QVERIFY(set);
-        std::string text;
-        for (const std::string& line : importSummary(*set))
-            text += line + "\n";
+        // The tagged albedo wins over the one named after the set; the first height file wins.
+        QCOMPARE(set->material.maps.albedo, dir.filePath("rock_color.png").toStdString());
+        QCOMPARE(set->material.maps.height, written.heightFile);
+        const std::string text = summaryOf(*set);
         for (const char* name : {"rock_disp.png", "rock_normal.png", "rock_color.png", "rock.png",
                                  "rock_height.png", "notes.txt", "Told by the normal map"})
             QVERIFY2(text.find(name) != std::string::npos, (text + " lacks " + name).c_str());
+        QVERIFY2(text.find("Not used: rock.png (named after the set, no tag: rock_color.png is the "
+                           "albedo)") != std::string::npos,
+                 text.c_str());
+        QVERIFY2(text.find("Not used: rock_height.png (another file for the same map: "
+                           "rock_disp.png is used)") != std::string::npos,
+                 text.c_str());
         QVERIFY(text.find("Ignored: notes.txt (not an image file)") != std::string::npos);
     }
 
@@ -208,17 +252,191 @@ private slots:
                  set.error().message.c_str());
     }
 
-    void aSetNeedsAHeightMap() {
+    void aSetNeedsReliefAndAFolderOfNothingIsRefusedWithTheReport() {
         QTemporaryDir dir;
         QVERIFY(writeTextFile(dir.filePath("rock_albedo.png").toStdString(), "x"));
         const Result<TextureSetPlan> plan = planTextureSet(filesOf(dir), "dir");
         QVERIFY(plan);
         const Result<ImportedSet> set = importTextureSet(*plan);
         QVERIFY(!set);
-        QVERIFY(set.error().message.find("The texture set rock has no height map") == 0);
-        const Result<TextureSetPlan> empty = planTextureSet({"/x/notes.txt"}, "x");
-        QVERIFY(!empty);
-        QVERIFY(empty.error().message.find("x: no image whose name ends in a map suffix") == 0);
+        QVERIFY2(set.error().message.find("The texture set rock has no height map and no normal "
+                                          "map") == 0,
+                 set.error().message.c_str());
+        const Result<TextureSetPlan> none = planTextureSet(
+            {"/x/notes.txt", "/x/IMG_0001.jpg", "/x/rock_emission.png", "/x/stone_nm.dds"}, "x");
+        QVERIFY(!none);
+        QCOMPARE(QString::fromStdString(none.error().message),
+                 QString("x: no texture set recognised (no file named as a height, normal or "
+                         "colour map of a set)\n"
+                         "  IMG_0001.jpg: no map tag (_albedo, _disp, _normal, ...), and not "
+                         "named after a set here\n"
+                         "  notes.txt: not an image file\n"
+                         "  rock_emission.png: tag _emission (emission), of no texture set here\n"
+                         "  stone_nm.dds: an image format not read here (.dds): convert it to PNG, "
+                         "TGA, TIFF or EXR"));
+    }
+
+    void mapsOneFolderDownAsDownloadsKeepThem() {
+        // Poly Haven's download: the .blend at the top, the maps in textures/.
+        QTemporaryDir dir;
+        QVERIFY(QDir(dir.path()).mkdir("textures"));
+        QVERIFY(QDir(dir.path()).mkdir(".cache"));
+        QVERIFY(writeTextFile(dir.filePath("brick_wall_001_1k.blend").toStdString(), "blend"));
+        QVERIFY(
+            writeTextFile(dir.filePath(".cache/brick_wall_001_disp_1k.png").toStdString(), "x"));
+        writeConventionSet(dir.filePath("textures").toStdString(),
+                           {{"brick_wall_001_diff_1k.jpg", Texels::Albedo},
+                            {"brick_wall_001_disp_1k.png", Texels::Height},
+                            {"brick_wall_001_nor_gl_1k.png", Texels::Normal}},
+                           4, NormalGreen::OpenGL);
+        const Result<TextureSetPlan> plan = planTextureSet(filesOf(dir), "dir");
+        QVERIFY2(plan, plan ? "" : plan.error().message.c_str());
+        QCOMPARE(plan->name, std::string("brick_wall_001"));
+        const Result<ImportedSet> set = importTextureSet(*plan);
+        QVERIFY(set);
+        QVERIFY(set->material.maps.height.ends_with("/textures/brick_wall_001_disp_1k.png"));
+        QVERIFY(summaryOf(*set).find("Ignored: brick_wall_001_1k.blend (not an image file)") !=
+                std::string::npos);
+    }
+
+    void aNormalOnlySetGetsADerivedHeightOnRequest() {
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        spec.stem = "tiles";
+        spec.seed = 3;
+        spec.size = 96;
+        spec.green = NormalGreen::DirectX;
+        const WrittenSet written = writeTextureSet(dir.path().toStdString(), spec);
+        QVERIFY(QFile::remove(QString::fromStdString(written.heightFile)));
+        Result<ImportedSet> set = importTextureSet(*planTextureSet(filesOf(dir), "dir"));
+        QVERIFY2(set, set ? "" : set.error().message.c_str());
+        QVERIFY(set->heightMissing);
+        QVERIFY(set->material.maps.height.empty() && set->assets.height.empty());
+        QCOMPARE(set->material.normalGreen, NormalGreen::DirectX); // from the curl alone
+        QVERIFY2(summaryOf(*set).find("No height map") != std::string::npos,
+                 summaryOf(*set).c_str());
+
+        QVERIFY(deriveHeight(*set));
+        QVERIFY(!set->heightMissing);
+        QCOMPARE(set->material.heightDerivedFrom, std::string("tiles_normal.png"));
+        QVERIFY(set->material.maps.height.empty()); // no file until saved
+        QCOMPARE(set->assets.height.width, spec.size);
+        // Close to the height the normal map was baked from (scale 0.05): 5% RMS of its range.
+        double meanA = 0.0, meanB = 0.0, lo = 1.0, hi = 0.0;
+        const std::size_t n = written.height.texels.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            meanA += set->assets.height.texels[i] * set->material.heightScale;
+            meanB += written.height.texels[i] * 0.05;
+            lo = std::min(lo, double(written.height.texels[i]));
+            hi = std::max(hi, double(written.height.texels[i]));
+        }
+        double sum = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double e =
+                (set->assets.height.texels[i] * set->material.heightScale - meanA / n) -
+                (written.height.texels[i] * 0.05 - meanB / n);
+            sum += e * e;
+        }
+        QVERIFY2(std::sqrt(sum / n) < 0.05 * (hi - lo) * 0.05, qPrintable(QString::number(sum)));
+        const std::string text = summaryOf(*set);
+        QVERIFY2(text.find("derived from the normal map tiles_normal.png") != std::string::npos,
+                 text.c_str());
+        QVERIFY(!deriveHeight(*set)); // once
+    }
+
+    // Float height maps in their makers' units (signed, centimetres, tiny, far from zero; height
+    // or depth; either green): read as stored by their own range, which the material records and
+    // which reads them back the same through the material file; the relief is told as for a PNG.
+    void aFloatMapInItsOwnUnitsIsReadByItsRange_data() {
+        QTest::addColumn<float>("offset");
+        QTest::addColumn<float>("scale");
+        QTest::addColumn<bool>("depth");
+        QTest::addColumn<unsigned>("seed");
+        for (unsigned seed : {4u, 8u, 12u}) {
+            const float f = 0.5f + 0.25f * static_cast<float>(seed % 5);
+            QTest::addRow("signed-seed%u", seed) << -0.7f * f << 1.9f * f << false << seed;
+            QTest::addRow("centimetres-depth-seed%u", seed) << 0.0f << 350.0f * f << true << seed;
+            QTest::addRow("tiny-signed-seed%u", seed) << -3e-5f * f << 6e-5f * f << false << seed;
+            QTest::addRow("far-from-zero-seed%u", seed) << 1000.0f * f << 0.5f << true << seed;
+        }
+    }
+    void aFloatMapInItsOwnUnitsIsReadByItsRange() {
+        QFETCH(float, offset);
+        QFETCH(float, scale);
+        QFETCH(bool, depth);
+        QFETCH(unsigned, seed);
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        spec.stem = "bake";
+        spec.seed = seed;
+        spec.depth = depth;
+        spec.green = seed % 8 ? NormalGreen::OpenGL : NormalGreen::DirectX;
+        spec.fileOffset = offset;
+        spec.fileScale = scale;
+        const WrittenSet written = writeTextureSet(dir.path().toStdString(), spec);
+        const Result<ImportedSet> set = importTextureSet(*planTextureSet(filesOf(dir), "dir"));
+        QVERIFY2(set, set ? "" : set.error().message.c_str());
+        const Material& m = set->material;
+        QVERIFY(m.heightRange);
+        QCOMPARE(m.heightRange->lo, written.file.minHeight());
+        QCOMPARE(m.heightRange->hi, written.file.maxHeight());
+        QCOMPARE(m.heightIsDepth, depth);
+        QCOMPARE(m.normalGreen, spec.green);
+        QVERIFY(set->relief.fromData);
+        const std::string text = summaryOf(*set);
+        QVERIFY2(text.find("bake_disp.exr holds heights from ") != std::string::npos, text.c_str());
+        // White = high over [0, 1]: the written relief spread over its range, to the float file's
+        // precision at its magnitude.
+        const float lo = written.height.minHeight(), hi = written.height.maxHeight();
+        const float magnitude = std::max(std::abs(m.heightRange->lo), std::abs(m.heightRange->hi));
+        const double tolerance = 2.0 * (std::nextafter(magnitude, INFINITY) - magnitude) /
+                                     (double(m.heightRange->hi) - m.heightRange->lo) +
+                                 1e-6;
+        double worst = 0.0;
+        for (std::size_t i = 0; i < written.height.texels.size(); ++i)
+            worst = std::max(worst, std::abs(double(set->assets.height.texels[i]) -
+                                             (written.height.texels[i] - lo) / double(hi - lo)));
+        QVERIFY2(worst <= tolerance, qPrintable(QString("%1 > %2").arg(worst).arg(tolerance)));
+
+        // Through the material file: the same heights, texel for texel.
+        const std::string file = dir.filePath("bake.json").toStdString();
+        QVERIFY(saveMaterial(m, file));
+        const Result<Material> loaded = loadMaterial(file);
+        QVERIFY(loaded && loaded->heightRange == m.heightRange);
+        MapSet height;
+        height.height = true;
+        const Result<MaterialAssets> assets = loadMaterialAssets(*loaded, file, height);
+        QVERIFY2(assets, assets ? "" : assets.error().message.c_str());
+        for (std::size_t i = 0; i < written.height.texels.size(); ++i)
+            QCOMPARE(assets->height.texels[i], set->assets.height.texels[i]);
+    }
+
+    // A float map of one value outside [0, 1] has no range; one with NaN or infinity is refused:
+    // each names the file, and nothing is clamped.
+    void aFloatMapWithoutARangeOrWithNaNIsRefusedNamingIt() {
+        for (const float bad : {7.25f, std::nanf(""), -INFINITY}) {
+            QTemporaryDir dir;
+            TextureSetSpec spec;
+            spec.fileScale = 1.0f;
+            const WrittenSet written = writeTextureSet(dir.path().toStdString(), spec);
+            Image image = written.file.toImage();
+            if (std::isnan(bad) || std::isinf(bad)) {
+                image.at(5, 9, 0) = bad;
+            } else {
+                for (float& v : image.pixels)
+                    v = bad;
+            }
+            ImageWriteOptions write;
+            write.format = PixelFormat::Float;
+            QVERIFY(writeImage(written.heightFile, image, write));
+            const Result<ImportedSet> set = importTextureSet(*planTextureSet(filesOf(dir), "dir"));
+            QVERIFY(!set);
+            const std::string& message = set.error().message;
+            QVERIFY2(message.starts_with(written.heightFile + ": "), message.c_str());
+            QVERIFY2(message.find(std::isfinite(bad) ? "every height texel holds 7.25"
+                                                     : "NaN or infinite") != std::string::npos,
+                     message.c_str());
+        }
     }
 };
 

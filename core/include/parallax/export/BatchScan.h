@@ -1,31 +1,35 @@
 #pragma once
-// Batch export: a folder of height maps, found by suffix (docs/conventions.md §6), each turned into
-// a material with one preset's settings and the sibling maps that share its base name.
+// Batch export: every texture set in a folder, grouped and read exactly as `import` and the
+// editor read one (TextureSet.h, TextureSetImport.h), each made into a material with one preset's
+// settings.
 
 #include "parallax/Result.h"
 #include "parallax/material/Material.h"
+#include "parallax/material/TextureSetImport.h"
 
-#include <span>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace px {
 
 struct BatchItem {
-    std::string name;       // the base name: "bricks" for bricks_height.png
-    std::string heightFile; // the height map that started it
-    Material material;      // the preset with this item's maps (absolute paths) and name
-    std::string problem;    // non-empty: this item cannot be exported (e.g. a second height map)
+    std::string name;    // the set's name: "Bricks076C" for Bricks076C_1K-PNG_Displacement.png
+    TextureSetPlan plan; // its files, as the import groups them
 };
 
-// The suffixes that mark a height map; "_depth" marks a depth map (loaded inverted).
-std::span<const std::string_view> heightSuffixes();
+struct BatchFolder {
+    std::vector<BatchItem> items;        // sorted by name (case-insensitively)
+    std::vector<SkippedFile> unassigned; // files of no set, with why
+};
 
-// Every height map in `folder` (not recursive), sorted by name, with its siblings: albedo
-// (_albedo _diffuse _basecolor _color), normal (_normal _nrm _n), ao (_ao _occlusion),
-// _roughness, _metallic; suffixes and extensions matched without regard to case. Errors: the
-// folder is missing or unreadable.
-Result<std::vector<BatchItem>> scanBatchFolder(const std::string& folder, const Material& preset);
+// Every texture set in `folder` and the folders in it (one level, as folderFiles reads). Errors:
+// the folder is missing or unreadable; no set in it (the message lists every file and why).
+Result<BatchFolder> scanBatchFolder(const std::string& folder);
+
+// The item's material: its set imported as `import` does, with `preset`'s settings (its maps are
+// not used). Errors: the import's (an unreadable file, a set with no relief), and a set with only
+// a normal map (it has no height map to export; `import --derive-height` makes one).
+Result<ImportedSet> importBatchItem(const BatchItem& item, const Material& preset,
+                                    const AssetLoadOptions& options = {});
 
 } // namespace px

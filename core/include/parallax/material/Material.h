@@ -39,6 +39,10 @@ struct MaterialMaps {
     std::string ao;
     std::string roughness;
     std::string metallic;
+    // Specular level, as stored: scales the specular reflection of non-metals (white = the full,
+    // default reflection, black = none); a coloured file tints it. Kept for the engines that
+    // read one (docs/export.md); the preview does not.
+    std::string specular;
 };
 
 // Technique "auto": no technique of its own; resolved where the material is rendered or exported
@@ -57,12 +61,29 @@ struct AutoQuality {
     }
 };
 
+// Which channel of their files the occlusion, roughness and metallic maps read: a packed file
+// (Unreal's ORM, Unity's mask map, CryEngine's gloss in a normal map's alpha) serves several maps.
+struct SurfaceChannels {
+    HeightChannel ao = HeightChannel::Red;
+    HeightChannel roughness = HeightChannel::Red;
+    HeightChannel metallic = HeightChannel::Red;
+    bool gloss = false; // the roughness file holds gloss (smoothness): roughness = 1 - value
+    bool operator==(const SurfaceChannels&) const = default;
+};
+
 struct Material {
     std::string name = "untitled";
     MaterialMaps maps;
+    SurfaceChannels surface;
     HeightChannel heightChannel = HeightChannel::Red;
     bool heightIsDepth = false; // white = deep: loaded inverted
-    float heightScale = 0.05f;  // s, uv units (docs/conventions.md §2)
+    // The file values for h = 0 and h = 1 (a float height map in its own units); unset: values as
+    // stored, within [0, 1]. The height scale is the depth of the whole range either way.
+    std::optional<HeightRange> heightRange;
+    // Set when the height map was made by integrating this normal map (its file name): a guess at
+    // the relief, not a measured one; exports say so.
+    std::string heightDerivedFrom;
+    float heightScale = 0.05f; // s, uv units (docs/conventions.md §2)
     WrapMode wrap = WrapMode::Repeat;
     float tiling = 1.0f; // uv repeats across a mesh
 

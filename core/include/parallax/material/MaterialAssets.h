@@ -22,11 +22,13 @@ struct MapSet {
     bool ao = false;
     bool roughness = false;
     bool metallic = false;
+    bool specular = false;
 };
 
 // The maps the material's own shader samples: height for parallax or height-derived normals, the
 // normal map for NormalSource::Map, the cone map the technique reads, albedo and AO when there are
-// files for them, roughness/metallic under the metallic-roughness model when there are. (The
+// files for them, roughness/metallic under the metallic-roughness model when there are; never the
+// specular map, which only engines read. (The
 // max-mip pyramid is built when loading, never stored.) A needed cone map the material has no
 // file for is still listed: it is baked from the height map.
 MapSet mapsUsed(const Material& material);
@@ -44,6 +46,7 @@ struct MaterialAssets {
     Image ao;            // linear, as stored
     Image roughness;     // linear, as stored
     Image metallic;      // linear, as stored
+    Image specular;      // as stored: grey (a level) or colour
 };
 
 struct AssetLoadOptions {
