@@ -1,7 +1,6 @@
 #include "window/MainWindow.h"
 
 #include "jobs/Baking.h"
-#include "jobs/SkyFollower.h"
 #include "model/MaterialDocument.h"
 #include "panels/ComparePanel.h"
 #include "panels/MapsPanel.h"
@@ -9,6 +8,7 @@
 #include "panels/TechniquePanel.h"
 #include "panels/ViewPanel.h"
 #include "preview/GlSupport.h"
+#include "preview/SkyFollower.h"
 #include "preview/ViewportGrid.h"
 #include "window/MainWindowActions.h"
 #include "window/RecentFiles.h"
