@@ -1,7 +1,7 @@
 #include "parallax/render/GpuMaterial.h"
 
 #include "parallax/bake/ConeMapBaker.h"
-#include "parallax/bake/ConeMapReference.h"
+#include "parallax/bake/ConeMapFinish.h"
 #include "parallax/render/TextureUpload.h"
 #include "parallax/shader/ShaderGenerator.h"
 
