@@ -1,6 +1,6 @@
 #include "ProbeRun.h"
 
-#include "ConeCacheFile.h"
+#include "bake/ConeCacheFile.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/io/Fnv1a.h"
 
