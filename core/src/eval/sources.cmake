@@ -14,6 +14,6 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/ProbeRun.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Recommendation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RecommendationText.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/EngineMarch.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/EngineLayers.cpp
   ${CMAKE_CURRENT_LIST_DIR}/AutoTechnique.cpp
 )

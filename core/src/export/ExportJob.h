@@ -2,7 +2,7 @@
 // One export in progress: the material, its loaded maps, the staging folder, and the helpers
 // every target's writer uses.
 
-#include "parallax/eval/EngineMarch.h"
+#include "parallax/eval/EngineLayers.h"
 #include "parallax/export/ExportFolder.h"
 #include "parallax/export/Exporter.h"
 
@@ -23,7 +23,7 @@ struct ExportJob {
     std::string stem;         // the material's name made safe for file names
     std::string materialFile; // map paths are relative to its folder
     // Technique "auto" for Godot and Unity: the layer counts the engine's own march needs
-    // (EngineMarch.h).
+    // (EngineLayers.h).
     std::optional<EngineLayersAdvice> engineLayers = std::nullopt;
 
     // Writes into the export folder and records the file. Errors name the file.
