@@ -10,8 +10,10 @@
 namespace px {
 namespace {
 
-constexpr int kLayerRungs[] = {4,  5,  6,  7,  8,  9,  10, 11, 12, 14, 16, 18,  20, 22,
-                               25, 28, 32, 36, 40, 45, 50, 56, 64, 80, 96, 112, 128};
+// About 12% apart, up to what both engines take (kEngineMaxLayers).
+constexpr int kLayerRungs[] = {4,  5,  6,  7,  8,  9,  10, 11, 12, 14, 16, 18,
+                               20, 22, 25, 28, 32, 36, 40, 45, 50, 56, 64};
+static_assert(kLayerRungs[std::size(kLayerRungs) - 1] == kEngineMaxLayers);
 
 // The ladder's min/max pair for a max: Godot's 8-32 keep max = 4 min, HDRP's 5-15 max = 3 min.
 EngineLayers rung(EngineMarch engine, int maxLayers) {
@@ -84,14 +86,15 @@ Result<EngineLayersAdvice> recommendEngineLayers(EngineMarch engine, const Recom
         advice.tried = rung(engine, kLayerRungs[top]);
         advice.angles = *best;
         const AngleMeasure& failed = best->back();
-        char text[320];
-        std::snprintf(
-            text, sizeof text,
-            "%s does not meet %s with up to %s: at %g degrees its p99 error is %.3g texels "
-            "(upper bound %.3g), its worst ray %.3g",
-            engine == EngineMarch::Godot ? "Godot's deep parallax" : "HDRP's parallax occlusion",
-            budget, layersText(engine, advice.tried).c_str(), failed.polarDeg, failed.p99,
-            failed.p99Bound, failed.maxError);
+        char text[384];
+        std::snprintf(text, sizeof text,
+                      "%s does not meet %s with up to %s (%s takes at most %d): at %g degrees its "
+                      "p99 error is %.3g texels (upper bound %.3g), its worst ray %.3g",
+                      engine == EngineMarch::Godot ? "Godot's deep parallax"
+                                                   : "HDRP's parallax occlusion",
+                      budget, layersText(engine, advice.tried).c_str(),
+                      engine == EngineMarch::Godot ? "Godot" : "HDRP Lit", kEngineMaxLayers,
+                      failed.polarDeg, failed.p99, failed.p99Bound, failed.maxError);
         advice.note = text;
         if (!fallback.empty())
             advice.note += "; " + fallback + " does";

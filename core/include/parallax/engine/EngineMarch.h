@@ -59,4 +59,9 @@ TraceResult hdrpParallaxOcclusion(const HeightField& field, WrapMode wrap, glm::
 
 enum class EngineMarch { Godot, Hdrp };
 
+// The most layers (Godot) or steps (HDRP) the engine's material takes: 64 for both. Godot's
+// inspector stops heightmap_min_layers and heightmap_max_layers at 64 (material.cpp, range
+// "1,64,1"); HDRP Lit clamps _PPDMinSamples and _PPDMaxSamples to Range(1, 64).
+inline constexpr int kEngineMaxLayers = 64;
+
 } // namespace px
