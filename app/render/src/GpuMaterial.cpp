@@ -241,21 +241,6 @@ Status GpuMaterial::prepare(Technique technique) {
     return success();
 }
 
-void GpuMaterial::setConeMap(const ConeMap& cones) {
-    if (cones.kind == ConeKind::Conservative) {
-        m_coneCpu = cones;
-        m_cone.reset();
-    } else {
-        m_relaxedCpu = cones;
-        m_relaxed.reset();
-    }
-}
-
-void GpuMaterial::setPyramid(const MaxMipPyramid& pyramid) {
-    m_pyramidCpu = std::make_shared<const MaxMipPyramid>(pyramid);
-    m_atlas.reset();
-}
-
 void GpuMaterial::bind(const ShaderProgram& program) const {
     auto unit = [](int u, const Texture& t) {
         if (!t)

@@ -38,6 +38,8 @@ struct ExportJob {
     // converted, or one baked from the height map at the material's scale. Empty when the
     // material has neither (adds a note then).
     Result<Image> normals(NormalGreen green);
+    // Writes normals(green) as `name` at the options' bit depth; false when there is none.
+    Result<bool> writeNormals(const std::string& name, NormalGreen green);
 
     // Occlusion (R), roughness (G), metallic (B) packed as glTF, Godot and Unreal read them;
     // a channel without a map holds the material's constant (occlusion: 1). nullopt when the

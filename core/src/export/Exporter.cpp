@@ -82,6 +82,19 @@ Result<Image> ExportJob::normals(NormalGreen green) {
     return bakeNormalMap(assets.height, bake);
 }
 
+Result<bool> ExportJob::writeNormals(const std::string& name, NormalGreen green) {
+    Result<Image> map = normals(green);
+    if (!map)
+        return map.error();
+    if (map->empty())
+        return false;
+    if (Status s = image(name, *map, options.normalFormat); !s)
+        return s.error();
+    return true;
+}
+
+// Engines read it with factor 1: a missing map's channel holds the material's number
+// (SurfaceFactors.h).
 std::optional<Image> ExportJob::orm() const {
     const ChannelSource sources[3] = {{&assets.ao, 0, false, 1.0f},
                                       {&assets.roughness, 0, false, material.roughness},

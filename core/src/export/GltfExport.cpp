@@ -113,15 +113,12 @@ Status writeGltf(ExportJob& job) {
             material["occlusionTexture"] = {{"index", textures.size() - 1}};
     }
     material["pbrMetallicRoughness"] = pbr;
-    Result<Image> normals = job.normals(NormalGreen::OpenGL);
+    const std::string normalName = job.stem + "_normal.png";
+    Result<bool> normals = job.writeNormals(normalName, NormalGreen::OpenGL);
     if (!normals)
         return normals.error();
-    if (!normals->empty()) {
-        const std::string name = job.stem + "_normal.png";
-        if (Status s = job.image(name, *normals, job.options.normalFormat); !s)
-            return s;
-        material["normalTexture"] = texture(name);
-    }
+    if (*normals)
+        material["normalTexture"] = texture(normalName);
 
     // The parallax settings: the project's own material, maps renamed to the exported files.
     Material extras = m;

@@ -67,15 +67,13 @@ Status writeGodot(ExportJob& job) {
         if (!job.assets.ao.empty())
             props << "ao_enabled = true\nao_texture = " << ref << "\nao_texture_channel = 0\n";
     }
-    Result<Image> normals = job.normals(NormalGreen::OpenGL);
+    const std::string normalName = job.stem + "_normal.png";
+    Result<bool> normals = job.writeNormals(normalName, NormalGreen::OpenGL);
     if (!normals)
         return normals.error();
-    if (!normals->empty()) {
-        const std::string name = job.stem + "_normal.png";
-        if (Status s = job.image(name, *normals, job.options.normalFormat); !s)
-            return s;
-        props << "normal_enabled = true\nnormal_texture = " << texture(name, "normal") << "\n";
-    }
+    if (*normals)
+        props << "normal_enabled = true\nnormal_texture = " << texture(normalName, "normal")
+              << "\n";
     const TechniqueInfo& t = info(m.technique);
     if (t.parallax) {
         // A depth map (as the artist's file was) goes out as one, with Godot told to flip it.

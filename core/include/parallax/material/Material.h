@@ -1,7 +1,8 @@
 #pragma once
 // A material: which maps, how to read them, and how to render them. Materials are data; the
-// shader variant, the bakes and the exports are derived from them (STYLE.md, "variants as data").
-// The JSON form ("format": "parallax-studio-material", "version": 1) lives in MaterialFile.h.
+// shader variant, the bakes and the exports are derived from them (docs/development.md,
+// Architecture, "Variants as data"). The JSON form ("format": "parallax-studio-material",
+// "version": 1) lives in MaterialFile.h.
 
 #include "parallax/bake/NormalGreen.h"
 #include "parallax/heightfield/HeightFieldLoader.h"
