@@ -82,8 +82,10 @@ Values godotValues(const std::string& folder) {
     };
     Values v{number("roughness"), number("metallic")};
     const QRegularExpressionMatch file =
-        QRegularExpression("path=\"res://([^\"]*_orm\\.png)\"").match(tres);
+        QRegularExpression("path=\"(?:res://)?([^\"]*_orm\\.png)\"").match(tres);
     if (tres.contains("roughness_texture = ")) {
+        if (!file.hasMatch())
+            qFatal("%s: no packed texture named", qPrintable(tres));
         v.roughness *= texel(folder, file.captured(1).toStdString(),
                              static_cast<int>(number("roughness_texture_channel")));
         v.metallic *= texel(folder, file.captured(1).toStdString(),
@@ -164,12 +166,12 @@ void SurfaceRuleTest::previewAndExportsDrawOneRule() {
     auto constantMap = [&](const char* name, float value) {
         Image map(16, 16, 1);
         std::fill(map.pixels.begin(), map.pixels.end(), value);
-        QVERIFY(writeImage(folder + "/" + name, map).ok());
+        QVERIFY(writeImage(folder + "/" + name, map, {}).ok());
     };
     const HeightField field = makeProceduralMap(ProceduralMap::Noise, 32, 32, 4);
     Image height(field.width, field.height, 1);
     std::copy(field.texels.begin(), field.texels.end(), height.pixels.begin());
-    QVERIFY(writeImage(folder + "/height.png", height).ok());
+    QVERIFY(writeImage(folder + "/height.png", height, {}).ok());
     Material m = test::sampleMaterial(Technique::Normal);
     m.name = "untitled";
     m.maps = {};

@@ -55,7 +55,8 @@ Status writeUnreal(ExportJob& job) {
         note << "  " << base << "_N.png     Normal: DirectX green (Y-) as Unreal expects; "
              << "Compression Normalmap, sRGB off, Flip Green Channel off\n";
     }
-    if (const std::optional<Image> orm = job.orm()) {
+    // Unreal's material reads the texel as the value: a missing map's channel holds the number.
+    if (const std::optional<Image> orm = job.orm(ExportJob::MissingChannel::Number)) {
         if (Status s = job.image(base + "_ORM.png", *orm, PixelFormat::UInt8); !s)
             return s;
         note << "  " << base << "_ORM.png   R = Ambient Occlusion, G = Roughness, B = Metallic: "
@@ -93,7 +94,7 @@ Status writeUnreal(ExportJob& job) {
         note << "  Base Color <- " << base << "_BC RGB\n";
     if (*normals)
         note << "  Normal <- " << base << "_N RGB\n";
-    if (job.orm())
+    if (job.orm(ExportJob::MissingChannel::Number))
         note << "  Ambient Occlusion <- " << base << "_ORM R, Roughness <- G, Metallic <- B\n";
     else
         note << "  Roughness = " << shortestDecimal(m.roughness)

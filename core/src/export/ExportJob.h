@@ -41,10 +41,13 @@ struct ExportJob {
     // Writes normals(green) as `name` at the options' bit depth; false when there is none.
     Result<bool> writeNormals(const std::string& name, NormalGreen green);
 
-    // Occlusion (R), roughness (G), metallic (B) packed as glTF, Godot and Unreal read them;
-    // a channel without a map holds the material's constant (occlusion: 1). nullopt when the
-    // material has none of the three maps.
-    std::optional<Image> orm() const;
+    // Occlusion (R), roughness (G), metallic (B) packed as glTF, Godot and Unreal read them. A
+    // roughness or metallic channel without a map holds 1 for targets that multiply it by a
+    // factor (glTF, Godot, the package: factors from surfaceFactors()), the material's number for
+    // those that read the texel as the value (Unreal); see SurfaceFactors.h. Occlusion without a
+    // map: 1. nullopt when the material has none of the three maps.
+    enum class MissingChannel { One, Number };
+    std::optional<Image> orm(MissingChannel missing) const;
 
     // The cone map of `kind`: the loaded one, or baked from the height map (with a note).
     ConeMap cones(ConeKind kind);

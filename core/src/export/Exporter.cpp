@@ -93,12 +93,11 @@ Result<bool> ExportJob::writeNormals(const std::string& name, NormalGreen green)
     return true;
 }
 
-// Engines read it with factor 1: a missing map's channel holds the material's number
-// (SurfaceFactors.h).
-std::optional<Image> ExportJob::orm() const {
+std::optional<Image> ExportJob::orm(MissingChannel missing) const {
+    const bool one = missing == MissingChannel::One;
     const ChannelSource sources[3] = {{&assets.ao, 0, false, 1.0f},
-                                      {&assets.roughness, 0, false, material.roughness},
-                                      {&assets.metallic, 0, false, material.metallic}};
+                                      {&assets.roughness, 0, false, one ? 1.0f : material.roughness},
+                                      {&assets.metallic, 0, false, one ? 1.0f : material.metallic}};
     return packChannels(sources, 3, material.wrap);
 }
 

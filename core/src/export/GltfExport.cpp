@@ -7,6 +7,7 @@
 #include "io/ShortestDecimal.h"
 #include "parallax/Version.h"
 #include "parallax/material/MaterialFile.h"
+#include "parallax/material/SurfaceFactors.h"
 
 #include <array>
 #include <cstring>
@@ -101,9 +102,12 @@ Status writeGltf(ExportJob& job) {
             return s;
         pbr["baseColorTexture"] = texture(name);
     }
-    const std::optional<Image> orm = job.orm();
-    pbr["metallicFactor"] = orm ? 1.0 : shortestDecimal(m.metallic);
-    pbr["roughnessFactor"] = orm ? 1.0 : shortestDecimal(m.roughness);
+    // Factor x texel: the map where there is one, the number where there is not (SurfaceFactors.h).
+    const std::optional<Image> orm = job.orm(ExportJob::MissingChannel::One);
+    const SurfaceFactors factors =
+        surfaceFactors(m, !job.assets.roughness.empty(), !job.assets.metallic.empty());
+    pbr["metallicFactor"] = shortestDecimal(factors.metallic);
+    pbr["roughnessFactor"] = shortestDecimal(factors.roughness);
     if (orm) {
         const std::string name = job.stem + "_orm.png";
         if (Status s = job.image(name, *orm, PixelFormat::UInt8); !s)

@@ -5,6 +5,7 @@
 #include "ExportJob.h"
 #include "ExportTextures.h"
 #include "io/ShortestDecimal.h"
+#include "parallax/material/SurfaceFactors.h"
 
 #include <sstream>
 
@@ -53,9 +54,12 @@ Status writeGodot(ExportJob& job) {
             return s;
         props << "albedo_texture = " << texture(name, "albedo") << "\n";
     }
-    const std::optional<Image> orm = job.orm();
-    props << "metallic = " << real(orm ? 1.0 : shortestDecimal(m.metallic)) << "\n"
-          << "roughness = " << real(orm ? 1.0 : shortestDecimal(m.roughness)) << "\n";
+    // Number x texel: the map where there is one, the number where there is not (SurfaceFactors.h).
+    const std::optional<Image> orm = job.orm(ExportJob::MissingChannel::One);
+    const SurfaceFactors factors =
+        surfaceFactors(m, !job.assets.roughness.empty(), !job.assets.metallic.empty());
+    props << "metallic = " << real(shortestDecimal(factors.metallic)) << "\n"
+          << "roughness = " << real(shortestDecimal(factors.roughness)) << "\n";
     if (orm) {
         const std::string name = job.stem + "_orm.png";
         if (Status s = job.image(name, *orm, PixelFormat::UInt8); !s)

@@ -5,11 +5,10 @@
 // the preview, which drew a metallic map times the default metallic 0: no metal at all, while
 // glTF and Godot drew the map).
 //
-// Shaders that multiply a packed texture by a factor get the rule from one of two fillings:
-//  - the preview and the package: a missing map's channel holds 1 and its factor is the number;
-//    a present map's factor is 1 (surfaceFactors below);
-//  - engine exports (glTF, Godot, Unity, Unreal, whose materials may read the texture without a
-//    factor): a missing map's channel holds the number, every factor is 1 (ExportJob::orm()).
+// Targets that multiply a packed texture by a factor (the preview, the package, glTF, Godot) get
+// the rule exactly: a missing map's channel holds 1 and its factor is the number; a present map's
+// factor is 1 (surfaceFactors below). Targets that read the texel as the value (Unreal) get the
+// number in a missing map's channel, to the texture's 8-bit steps (ExportJob::orm()).
 
 #include "parallax/material/Material.h"
 
