@@ -7,13 +7,14 @@
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <numbers>
 #include <nlohmann/json.hpp>
 
 namespace px::test {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
+constexpr float kPi = std::numbers::pi_v<float>;
 
 void addGridTriangles(TestMesh& m, int columns, int rows, bool outwardAbc) {
     for (int j = 0; j < rows; ++j) {
