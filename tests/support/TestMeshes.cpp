@@ -7,8 +7,8 @@
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <limits>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 namespace px::test {
 

@@ -95,9 +95,10 @@ Result<bool> ExportJob::writeNormals(const std::string& name, NormalGreen green)
 
 std::optional<Image> ExportJob::orm(MissingChannel missing) const {
     const bool one = missing == MissingChannel::One;
-    const ChannelSource sources[3] = {{&assets.ao, 0, false, 1.0f},
-                                      {&assets.roughness, 0, false, one ? 1.0f : material.roughness},
-                                      {&assets.metallic, 0, false, one ? 1.0f : material.metallic}};
+    const ChannelSource sources[3] = {
+        {&assets.ao, 0, false, 1.0f},
+        {&assets.roughness, 0, false, one ? 1.0f : material.roughness},
+        {&assets.metallic, 0, false, one ? 1.0f : material.metallic}};
     return packChannels(sources, 3, material.wrap);
 }
 

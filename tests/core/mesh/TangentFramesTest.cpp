@@ -152,8 +152,8 @@ void TangentFramesTest::generatedFramesMatchMikkTSpace() {
 
 void TangentFramesTest::generatedFramesMatchBlendersMikkTSpace_data() {
     QTest::addColumn<QString>("name");
-    for (const char* name : {"uv-sphere", "torus", "suzanne", "suzanne-mirrored", "cube-flat",
-                             "grid-bumpy"})
+    for (const char* name :
+         {"uv-sphere", "torus", "suzanne", "suzanne-mirrored", "cube-flat", "grid-bumpy"})
         QTest::newRow(name) << name;
 }
 
