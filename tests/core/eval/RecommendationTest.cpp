@@ -12,6 +12,8 @@
 #include "parallax/sample/ProceduralMaps.h"
 #include "parallax/trace/TraceScene.h"
 
+#include "TestSupport.h"
+
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
@@ -227,14 +229,26 @@ void RecommendationTest::meetsBudgetAtLeastCostAgainstFullSweep_data() {
     QTest::addColumn<QString>("kind");
     QTest::addColumn<unsigned>("seed");
     QTest::addColumn<double>("budget");
-    QTest::newRow("smooth 0.5") << "smooth" << 3u << 0.5;
-    QTest::newRow("stepped 0.5") << "stepped" << 5u << 0.5;
-    QTest::newRow("spiky 0.5") << "spiky" << 7u << 0.5;
-    QTest::newRow("8-bit 0.5") << "8bit" << 11u << 0.5;
-    QTest::newRow("8-bit 0.1") << "8bit" << 13u << 0.1;
-    QTest::newRow("bricks 2") << "bricks" << 1u << 2.0;
-    QTest::newRow("spike-flat 0.5") << "spike-flat" << 31u << 0.5;
-    QTest::newRow("jpeg 0.5") << "jpeg" << 33u << 0.5;
+    // PX_TEST_SHARD splits these rows, the suite's dearest, between ctest's shards (main()).
+    const test::TestShard shard = test::testShard();
+    const struct {
+        const char* name;
+        const char* kind;
+        unsigned seed;
+        double budget;
+    } rows[] = {
+        {"smooth 0.5", "smooth", 3u, 0.5},
+        {"stepped 0.5", "stepped", 5u, 0.5},
+        {"spiky 0.5", "spiky", 7u, 0.5},
+        {"8-bit 0.5", "8bit", 11u, 0.5},
+        {"8-bit 0.1", "8bit", 13u, 0.1},
+        {"bricks 2", "bricks", 1u, 2.0},
+        {"spike-flat 0.5", "spike-flat", 31u, 0.5},
+        {"jpeg 0.5", "jpeg", 33u, 0.5},
+    };
+    for (std::size_t i = 0; i < std::size(rows); ++i)
+        if (shard.takes(i))
+            QTest::newRow(rows[i].name) << QString(rows[i].kind) << rows[i].seed << rows[i].budget;
 }
 
 void RecommendationTest::meetsBudgetAtLeastCostAgainstFullSweep() {
@@ -571,5 +585,15 @@ void RecommendationTest::invalidInput() {
     QCOMPARE(message(c), std::string("'normal' traces no rays: it cannot be chosen"));
 }
 
-QTEST_GUILESS_MAIN(RecommendationTest)
+// ctest runs the full sweeps in shards (PX_TEST_SHARD=i/n, tests/core/eval/CMakeLists.txt): the
+// first shard runs every check with its rows of the sweep, the others only their rows of it.
+int main(int argc, char** argv) {
+    QCoreApplication app(argc, argv);
+    RecommendationTest test;
+    if (test::testShard().index == 0 || argc > 1)
+        return QTest::qExec(&test, argc, argv);
+    char sweep[] = "meetsBudgetAtLeastCostAgainstFullSweep";
+    char* args[] = {argv[0], sweep};
+    return QTest::qExec(&test, 2, args);
+}
 #include "RecommendationTest.moc"
