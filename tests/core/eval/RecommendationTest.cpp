@@ -6,13 +6,12 @@
 
 #include "parallax/eval/Recommendation.h"
 
+#include "TestSupport.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/eval/HitErrorStats.h"
 #include "parallax/eval/QuantileBound.h"
 #include "parallax/sample/ProceduralMaps.h"
 #include "parallax/trace/TraceScene.h"
-
-#include "TestSupport.h"
 
 #include <QtTest>
 #include <algorithm>
