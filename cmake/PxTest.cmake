@@ -43,6 +43,24 @@ function(px_add_qtest)
                        ENVIRONMENT "${_env}")
 endfunction()
 
+# Runs the test <name> (made by px_add_qtest) as <shards> ctest tests that ctest can run in
+# parallel: <name> with PX_TEST_SHARD=0/<shards>, <name>.1 ... with 1/<shards> ..., each taking every
+# <shards>-th of the test's cases (tests/support/TestSupport.h) under the test's labels and timeout.
+#
+#   px_shard_test(<name> <shards>)
+function(px_shard_test name shards)
+  get_test_property(${name} ENVIRONMENT _env)
+  get_test_property(${name} LABELS _labels)
+  get_test_property(${name} TIMEOUT _timeout)
+  set_tests_properties(${name} PROPERTIES ENVIRONMENT "${_env};PX_TEST_SHARD=0/${shards}")
+  math(EXPR _last "${shards} - 1")
+  foreach(_i RANGE 1 ${_last})
+    add_test(NAME ${name}.${_i} COMMAND ${name})
+    set_tests_properties(${name}.${_i} PROPERTIES LABELS "${_labels}" TIMEOUT ${_timeout}
+                         ENVIRONMENT "${_env};PX_TEST_SHARD=${_i}/${shards}")
+  endforeach()
+endfunction()
+
 set(PX_RUN_CLI ${CMAKE_CURRENT_LIST_DIR}/PxRunCli.cmake)
 
 function(px_add_cli_test)

@@ -13,6 +13,7 @@
 #include "parallax/bake/MaxMipPyramid.h"
 #include "parallax/bake/NormalMapBaker.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/io/FileExtension.h"
 #include "parallax/material/MaterialNames.h"
 
 #include <algorithm>
@@ -38,13 +39,6 @@ struct BakeOptions {
     int level = -1;
     std::string out;
 };
-
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
 
 // The pixel format from --bits and the extension, checked before any work is done.
 Result<PixelFormat> outputFormat(const BakeOptions& o) {

@@ -5,7 +5,7 @@
 #include "Cli.h"
 #include "CommonOptions.h"
 #include "ProgressLine.h"
-#include "parallax/eval/EngineMarch.h"
+#include "parallax/eval/EngineLayers.h"
 #include "parallax/eval/QualitySweep.h"
 #include "parallax/eval/Recommendation.h"
 #include "parallax/io/AtomicWrite.h"

@@ -1,12 +1,12 @@
 #include "Studio.h"
 
-#include "StudioOptions.h"
 #include "preview/GlSupport.h"
 #include "preview/GlUnavailableDialog.h"
 #include "preview/Viewport.h"
 #include "preview/ViewportGrid.h"
 #include "window/MainWindow.h"
 #include "window/Screenshot.h"
+#include "window/StudioOptions.h"
 
 #include <QApplication>
 #include <QIcon>

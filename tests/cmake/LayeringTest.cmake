@@ -1,25 +1,53 @@
-# px_check_layer passes a clean folder and fails one whose file includes a forbidden folder's
-# header, naming the file and the line.
-include(${PX_MODULES}/PxLayering.cmake)
-file(REMOVE_RECURSE ${WORK_DIR})
-file(WRITE ${WORK_DIR}/clean/Doc.h "#include \"model/Other.h\"\n#include <QString>\n")
-file(WRITE ${WORK_DIR}/bad/Doc.cpp "#include \"model/Doc.h\"\n  # include \"panels/MapsPanel.h\"\n")
-file(WRITE ${WORK_DIR}/check.cmake
-     "include(${PX_MODULES}/PxLayering.cmake)\n"
-     "px_check_layer(DIR \${DIR} LAYER model FORBIDDEN preview panels widgets jobs window)\n")
-foreach(case clean bad)
-  execute_process(COMMAND ${CMAKE_COMMAND} -DDIR=${WORK_DIR}/${case} -P ${WORK_DIR}/check.cmake
-                  RESULT_VARIABLE rc ERROR_VARIABLE err)
-  if(case STREQUAL "clean" AND NOT rc EQUAL 0)
-    message(FATAL_ERROR "a clean folder was refused: ${err}")
+# px_check_layers on made-up trees laid out as the real one, with the real layer table: a clean
+# tree passes; an include from a layer above, one from a layer beside and an include cycle inside
+# one layer are each refused, naming the file, the line and the layers (or the cycle).
+cmake_minimum_required(VERSION 3.25)
+include(${PX_MODULES}/PxLayerCheck.cmake)
+
+function(write_tree dir)
+  file(REMOVE_RECURSE ${dir})
+  file(WRITE ${dir}/core/include/parallax/Result.h "#pragma once\n")
+  file(WRITE ${dir}/core/include/parallax/heightfield/HeightField.h
+       "#pragma once\n#include \"parallax/Result.h\"\n#include <vector>\n")
+  file(WRITE ${dir}/core/include/parallax/material/Material.h
+       "#pragma once\n#include \"parallax/heightfield/HeightField.h\"\n")
+  file(WRITE ${dir}/core/src/bake/Baker.cpp
+       "#include \"parallax/heightfield/HeightField.h\"\n#include \"Cells.h\"\n#include \"gen/Version.h\"\n")
+  file(WRITE ${dir}/core/src/bake/Cells.h "#pragma once\n")
+  file(WRITE ${dir}/app/studio/model/Document.h "#pragma once\n#include \"parallax/material/Material.h\"\n")
+  file(WRITE ${dir}/app/cli/Main.cpp "#include \"parallax/material/Material.h\"\n")
+endfunction()
+
+function(expect case pattern)
+  px_check_layers(ROOT ${WORK_DIR}/${case} PROBLEMS problems)
+  if(NOT problems)
+    message(FATAL_ERROR "${case}: accepted")
   endif()
-  if(case STREQUAL "bad")
-    if(rc EQUAL 0)
-      message(FATAL_ERROR "a model file including panels/MapsPanel.h was accepted")
-    endif()
-    if(NOT err MATCHES "bad/Doc.cpp: # include \"panels/MapsPanel.h\"")
-      message(FATAL_ERROR "the refusal does not name the file and the line: ${err}")
-    endif()
+  if(NOT problems MATCHES "${pattern}")
+    message(FATAL_ERROR "${case}: the refusal does not say what is wrong where:\n${problems}")
   endif()
-endforeach()
-message(STATUS "layering check: clean folder passed, forbidden include refused")
+endfunction()
+
+write_tree(${WORK_DIR}/clean)
+px_check_layers(ROOT ${WORK_DIR}/clean PROBLEMS problems)
+if(problems)
+  message(FATAL_ERROR "a clean tree was refused:\n${problems}")
+endif()
+
+# A lower layer including a higher one's header (as NormalMapBaker.h once included Material.h).
+write_tree(${WORK_DIR}/above)
+file(APPEND ${WORK_DIR}/above/core/src/bake/Cells.h "  # include \"parallax/material/Material.h\"\n")
+expect(above "core/src/bake/Cells.h: # include \"parallax/material/Material.h\": core/bake may not include core/material")
+
+# The command line including the editor's model (a layer beside it, not below).
+write_tree(${WORK_DIR}/beside)
+file(APPEND ${WORK_DIR}/beside/app/cli/Main.cpp "#include \"model/Document.h\"\n")
+expect(beside "app/cli/Main.cpp: #include \"model/Document.h\": app/cli may not include app/studio/model")
+
+# Two files of one layer including each other, one through a relative path.
+write_tree(${WORK_DIR}/cycle)
+file(WRITE ${WORK_DIR}/cycle/core/src/bake/Cells.h "#pragma once\n#include \"../bake/Strips.h\"\n")
+file(WRITE ${WORK_DIR}/cycle/core/src/bake/Strips.h "#pragma once\n#include \"bake/Cells.h\"\n")
+expect(cycle "include cycle: core/src/bake/Cells.h -> core/src/bake/Strips.h -> core/src/bake/Cells.h")
+
+message(STATUS "layering check: clean tree passed; above, beside and cycle refused")

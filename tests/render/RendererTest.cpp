@@ -7,7 +7,7 @@
 #include "RenderTestSupport.h"
 #include "TestMeshes.h"
 #include "parallax/bake/ConeMapBaker.h"
-#include "parallax/bake/ConeMapReference.h"
+#include "parallax/bake/ConeMapFinish.h"
 #include "parallax/heightfield/HeightFieldLoader.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/mesh/MeshLoader.h"

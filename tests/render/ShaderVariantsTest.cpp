@@ -3,6 +3,7 @@
 // features, independent of the generator, is compared with both GL and the generator.
 
 #include "RenderTestSupport.h"
+#include "TestSupport.h"
 #include "parallax/render/ShaderProgram.h"
 
 #include <QtTest>
@@ -102,19 +103,12 @@ void ShaderVariantsTest::everyVariantBuildsWithExactlyTheUniformsItNeeds() {
                             std::inserter(missing, missing.end()));
         return "extra {" + join(extra) + "}, missing {" + join(missing) + "}";
     };
-    // PX_TEST_SHARD=i/n takes every n-th variant from the i-th: ctest runs the shards in parallel.
-    int shard = 0, shards = 1;
-    if (const QByteArray s = qgetenv("PX_TEST_SHARD"); !s.isEmpty()) {
-        const QList<QByteArray> parts = s.split('/');
-        QVERIFY(parts.size() == 2);
-        shard = parts[0].toInt();
-        shards = parts[1].toInt();
-        QVERIFY(shards >= 1 && shard >= 0 && shard < shards);
-    }
+    // ctest runs the shards in parallel (TestSupport.h).
+    const test::TestShard shard = test::testShard();
     const std::vector<VariantKey> all = allVariants();
     int expectedCount = 0;
     for (std::size_t i = 0; i < all.size(); ++i) {
-        if (static_cast<int>(i % shards) != shard)
+        if (!shard.takes(i))
             continue;
         ++expectedCount;
         const VariantKey& k = all[i];

@@ -33,9 +33,8 @@ using namespace px;
 using namespace px::studio;
 using namespace px::studio::test;
 
-class StudioMeshTest : public QObject {
+class StudioMeshTest : public GlWindowTest {
     Q_OBJECT
-    QTemporaryDir m_dir;
 
     QString write(const char* name, const px::test::TestMesh& mesh) {
         const QString file = m_dir.filePath(name);
@@ -44,14 +43,8 @@ class StudioMeshTest : public QObject {
         return ok ? file : QString();
     }
 
-public:
-    static void initMain() { setUpOpenGl(); }
-
 private slots:
-    void initTestCase() {
-        isolateSettings(m_dir);
-        QVERIFY2(probeOpenGl().usable, qPrintable(probeOpenGl().reason));
-    }
+    void initTestCase() { QVERIFY(glReady()); }
 
     void loadedMeshIsDrawnAndMeasured() {
         auto w = makeWindow();

@@ -2,7 +2,6 @@
 // the live preview, the "no OpenGL 4.3" message, the Compare panel (bench in the background,
 // progress, cancel, a click on the plot applies a setting), the command line, export, saving.
 
-#include "StudioOptions.h"
 #include "StudioTestSupport.h"
 #include "jobs/BackgroundLoad.h"
 #include "jobs/Baking.h"
@@ -23,6 +22,7 @@
 #include "widgets/SliderField.h"
 #include "widgets/TechniqueCombo.h"
 #include "window/RecentFiles.h"
+#include "window/StudioOptions.h"
 
 #include <QAbstractButton>
 #include <QAction>

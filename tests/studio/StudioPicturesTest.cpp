@@ -39,18 +39,11 @@ int drawnPixels(const Image& image) {
 
 } // namespace
 
-class StudioPicturesTest : public QObject {
+class StudioPicturesTest : public GlWindowTest {
     Q_OBJECT
-    QTemporaryDir m_dir;
-
-public:
-    static void initMain() { setUpOpenGl(); }
 
 private slots:
-    void initTestCase() {
-        isolateSettings(m_dir);
-        QVERIFY2(probeOpenGl().usable, qPrintable(probeOpenGl().reason));
-    }
+    void initTestCase() { QVERIFY(glReady()); }
 
     void activeViewAtAnySize() {
         auto w = makeWindow(1, 32);

@@ -38,18 +38,11 @@ QPointF brightestSky(const QImage& image, const OrbitCamera& camera) {
 
 } // namespace
 
-class StudioSkyTest : public QObject {
+class StudioSkyTest : public GlWindowTest {
     Q_OBJECT
-    QTemporaryDir m_dir;
-
-public:
-    static void initMain() { setUpOpenGl(); }
 
 private slots:
-    void initTestCase() {
-        isolateSettings(m_dir);
-        QVERIFY2(probeOpenGl().usable, qPrintable(probeOpenGl().reason));
-    }
+    void initTestCase() { QVERIFY(glReady()); }
 
     // The sky's sun is the light: moving the light (Ctrl+Left, as a drag does) makes the sky again
     // with its sun there, and the brightest part of the sky behind the mesh moves to where the

@@ -92,18 +92,11 @@ double legendLabelMatch(const PreviewWidget* preview, const QImage& grab, bool m
 
 } // namespace
 
-class StudioWindowTest : public QObject {
+class StudioWindowTest : public GlWindowTest {
     Q_OBJECT
-    QTemporaryDir m_dir;
-
-public:
-    static void initMain() { setUpOpenGl(); }
 
 private slots:
-    void initTestCase() {
-        isolateSettings(m_dir);
-        QVERIFY2(probeOpenGl().usable, qPrintable(probeOpenGl().reason));
-    }
+    void initTestCase() { QVERIFY(glReady()); }
 
     void sliderChangesPixelsAndUniforms() {
         auto w = makeWindow();

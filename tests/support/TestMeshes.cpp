@@ -8,12 +8,13 @@
 #include <glm/geometric.hpp>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 namespace px::test {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
+constexpr float kPi = std::numbers::pi_v<float>;
 
 void addGridTriangles(TestMesh& m, int columns, int rows, bool outwardAbc) {
     for (int j = 0; j < rows; ++j) {

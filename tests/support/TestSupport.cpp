@@ -1,6 +1,10 @@
 #include "TestSupport.h"
 
+#include <QtGlobal>
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <string_view>
 
 namespace px::test {
 
@@ -51,6 +55,23 @@ double denseMarchT(const HeightField& field, WrapMode wrap, double u0, double v0
         prevT = t;
     }
     return 1.0;
+}
+
+TestShard testShard() {
+    TestShard shard;
+    const char* value = std::getenv("PX_TEST_SHARD");
+    if (!value)
+        return shard;
+    const std::string_view text(value);
+    const std::size_t slash = text.find('/');
+    const auto number = [&](std::string_view part, std::size_t& out) {
+        const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), out);
+        return error == std::errc() && end == part.data() + part.size() && !part.empty();
+    };
+    if (slash == std::string_view::npos || !number(text.substr(0, slash), shard.index) ||
+        !number(text.substr(slash + 1), shard.count) || shard.index >= shard.count)
+        qFatal("PX_TEST_SHARD=%s: expected i/n with 0 <= i < n", value);
+    return shard;
 }
 
 } // namespace px::test

@@ -4,9 +4,20 @@
 #include "parallax/heightfield/HeightField.h"
 #include "parallax/trace/Tracer.h"
 
+#include <cstddef>
 #include <string>
 
 namespace px::test {
+
+// PX_TEST_SHARD=i/n: this process takes every n-th of a test's cases, from the i-th, so ctest runs
+// one long test as n tests in parallel (and each within its time budget). Unset: all of them. A
+// value that is not i/n with 0 <= i < n is a fatal error.
+struct TestShard {
+    std::size_t index = 0;
+    std::size_t count = 1;
+    bool takes(std::size_t i) const { return i % count == index; }
+};
+TestShard testShard();
 
 // A file under PX_SHARED_DIR/testdata/ (third-party images, conformance tests only; see
 // cmake/PxConformance.cmake).

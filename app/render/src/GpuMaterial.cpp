@@ -1,7 +1,7 @@
 #include "parallax/render/GpuMaterial.h"
 
 #include "parallax/bake/ConeMapBaker.h"
-#include "parallax/bake/ConeMapReference.h"
+#include "parallax/bake/ConeMapFinish.h"
 #include "parallax/render/TextureUpload.h"
 #include "parallax/shader/ShaderGenerator.h"
 
@@ -239,21 +239,6 @@ Status GpuMaterial::prepare(Technique technique) {
         m_atlasTop = m_pyramidCpu->top();
     }
     return success();
-}
-
-void GpuMaterial::setConeMap(const ConeMap& cones) {
-    if (cones.kind == ConeKind::Conservative) {
-        m_coneCpu = cones;
-        m_cone.reset();
-    } else {
-        m_relaxedCpu = cones;
-        m_relaxed.reset();
-    }
-}
-
-void GpuMaterial::setPyramid(const MaxMipPyramid& pyramid) {
-    m_pyramidCpu = std::make_shared<const MaxMipPyramid>(pyramid);
-    m_atlas.reset();
 }
 
 void GpuMaterial::bind(const ShaderProgram& program) const {

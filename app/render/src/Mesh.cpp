@@ -6,13 +6,13 @@
 #include <cmath>
 #include <cstddef>
 #include <glm/geometric.hpp>
+#include <numbers>
 
 namespace px {
 
 namespace {
 
 constexpr std::array<std::string_view, 4> kNames{"plane", "cube", "sphere", "cylinder"};
-constexpr float kPi = 3.14159265358979f;
 
 // A flat quad: origin at uv (0, 0), T and B spanning one tile.
 void addQuad(MeshData& m, glm::vec3 origin, glm::vec3 T, glm::vec3 B, glm::vec3 normal) {
@@ -79,13 +79,13 @@ MeshData sphere() {
     const float r = 1.0f, tilesAround = 2.0f;
     // Poles get a tiny offset: a zero-length T would leave the frame undefined there.
     addGrid(m, 64, 32, [&](float s, float t) {
-        const float phi = 2.0f * kPi * s;
-        const float theta = kPi * (1e-4f + t * (1.0f - 2e-4f));
+        const float phi = 2.0f * std::numbers::pi_v<float> * s;
+        const float theta = std::numbers::pi_v<float> * (1e-4f + t * (1.0f - 2e-4f));
         const glm::vec3 n(std::sin(theta) * std::sin(phi), std::cos(theta),
                           std::sin(theta) * std::cos(phi));
-        const glm::vec3 T = 2.0f * kPi * r * std::sin(theta) / tilesAround *
+        const glm::vec3 T = 2.0f * std::numbers::pi_v<float> * r * std::sin(theta) / tilesAround *
                             glm::vec3(std::cos(phi), 0.0f, -std::sin(phi));
-        const glm::vec3 B = kPi * r *
+        const glm::vec3 B = std::numbers::pi_v<float> * r *
                             glm::vec3(std::cos(theta) * std::sin(phi), -std::sin(theta),
                                       std::cos(theta) * std::cos(phi));
         return MeshVertex{r * n, n, {tilesAround * s, t}, T, B};
@@ -97,10 +97,10 @@ MeshData cylinder() {
     MeshData m;
     const float r = 0.6f, height = 1.6f, tilesAround = 2.0f;
     addGrid(m, 64, 1, [&](float s, float t) {
-        const float phi = 2.0f * kPi * s;
+        const float phi = 2.0f * std::numbers::pi_v<float> * s;
         const glm::vec3 n(std::sin(phi), 0.0f, std::cos(phi));
-        const glm::vec3 T =
-            2.0f * kPi * r / tilesAround * glm::vec3(std::cos(phi), 0.0f, -std::sin(phi));
+        const glm::vec3 T = 2.0f * std::numbers::pi_v<float> * r / tilesAround *
+                            glm::vec3(std::cos(phi), 0.0f, -std::sin(phi));
         const glm::vec3 B(0.0f, -height, 0.0f);
         return MeshVertex{{r * n.x, height * (0.5f - t), r * n.z}, n, {tilesAround * s, t}, T, B};
     });
@@ -114,7 +114,7 @@ MeshData cylinder() {
         m.vertices.push_back({{0.0f, y, 0.0f}, normal, {0.5f, 0.5f}, T, B});
         const int segments = 64;
         for (int i = 0; i <= segments; ++i) {
-            const float phi = 2.0f * kPi * i / segments;
+            const float phi = 2.0f * std::numbers::pi_v<float> * i / segments;
             const glm::vec3 p(r * std::sin(phi), y, r * std::cos(phi));
             const glm::vec2 uv(0.5f + p.x / (2.0f * r),
                                0.5f + (side > 0 ? p.z : -p.z) / (2.0f * r));

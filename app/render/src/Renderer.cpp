@@ -1,5 +1,7 @@
 #include "parallax/render/Renderer.h"
 
+#include "parallax/material/SurfaceFactors.h"
+
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -83,8 +85,9 @@ Status Renderer::draw(GpuMaterial& gpu, const Material& m, const OrbitCamera& ca
     p.set("pxBaseColor", o.baseColor);
     p.set("pxSpecular", m.specular);
     p.set("pxShininess", m.shininess);
-    p.set("pxRoughness", m.roughness);
-    p.set("pxMetallic", m.metallic);
+    const SurfaceFactors surface = surfaceFactors(m, gpu.hasRoughnessMap(), gpu.hasMetallicMap());
+    p.set("pxRoughness", surface.roughness);
+    p.set("pxMetallic", surface.metallic);
     p.set("pxShadowSoftness", m.shadowSoftness);
     p.set("pxNormalGreenSign", m.normalGreen == NormalGreen::DirectX ? -1.0f : 1.0f);
     p.set("pxExposure", o.exposure);

@@ -2,7 +2,7 @@
 
 #include "jobs/BackgroundPriority.h"
 #include "parallax/bake/ConeMapBaker.h"
-#include "parallax/bake/ConeMapReference.h"
+#include "parallax/bake/ConeMapFinish.h"
 
 #include <QMetaObject>
 #include <QPointer>

@@ -1,7 +1,6 @@
 #include "window/MainWindow.h"
 
 #include "jobs/Baking.h"
-#include "jobs/SkyFollower.h"
 #include "model/MaterialDocument.h"
 #include "panels/ComparePanel.h"
 #include "panels/MapsPanel.h"
@@ -10,6 +9,7 @@
 #include "panels/ViewPanel.h"
 #include "preview/GlSupport.h"
 #include "preview/PreviewWidget.h"
+#include "preview/SkyFollower.h"
 #include "preview/Viewport.h"
 #include "preview/ViewportGrid.h"
 #include "widgets/WheelGuard.h"

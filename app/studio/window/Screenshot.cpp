@@ -1,12 +1,12 @@
 #include "window/Screenshot.h"
 
-#include "StudioOptions.h"
 #include "jobs/Baking.h"
 #include "model/MaterialDocument.h"
 #include "preview/PreviewWidget.h"
 #include "preview/Viewport.h"
 #include "preview/ViewportGrid.h"
 #include "window/MainWindow.h"
+#include "window/StudioOptions.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>

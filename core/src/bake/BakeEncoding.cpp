@@ -1,6 +1,6 @@
 #include "parallax/bake/BakeEncoding.h"
 
-#include "parallax/bake/ConeMapReference.h"
+#include "parallax/bake/ConeMapFinish.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "parallax/bake/ConeMapBaker.h"
 
-#include "parallax/bake/ConeMapReference.h"
+#include "parallax/bake/ConeMapFinish.h"
 
 namespace px {
 

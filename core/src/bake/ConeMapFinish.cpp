@@ -1,6 +1,6 @@
 // What every cone map goes through after its bake: the 3x3 minimum and quantisation.
 
-#include "parallax/bake/ConeMapReference.h"
+#include "parallax/bake/ConeMapFinish.h"
 
 #include <algorithm>
 #include <cmath>

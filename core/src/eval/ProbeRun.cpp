@@ -1,6 +1,6 @@
 #include "ProbeRun.h"
 
-#include "ConeCacheFile.h"
+#include "bake/ConeCacheFile.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/io/Fnv1a.h"
 
@@ -46,6 +46,20 @@ std::uint64_t contentHash(const HeightField& field) {
     return fnv1a(field.texels.data(), field.texels.size() * sizeof(float));
 }
 
+// What a measure of a cone technique depends on besides the height map: a cone map the caller
+// supplied (by content: the editor passes its own bakes) or the one baked from the height map.
+std::string coneKey(const char* name, const std::shared_ptr<const ConeMap>& supplied) {
+    if (!supplied)
+        return std::string("/") + name + ":baked";
+    const ConeMap& c = *supplied;
+    char key[80];
+    std::snprintf(key, sizeof key, "/%s:%016llx/%dx%d", name,
+                  static_cast<unsigned long long>(
+                      fnv1a(c.sqrtRatio.data(), c.sqrtRatio.size() * sizeof(float))),
+                  c.width, c.height);
+    return key;
+}
+
 std::string number(double value) {
     char text[40];
     std::snprintf(text, sizeof text, "%.9g", value);
@@ -76,6 +90,7 @@ ProbeRun::ProbeRun(const RecommendConfig& config, const EvalControl& control)
                std::to_string(config.raysPerSide) + "/c" + number(config.confidence) + "/a";
     for (double a : config.azimuthDeg)
         m_mapKey += number(a) + ",";
+    m_measureKey = m_mapKey + coneKey("cone", config.cone) + coneKey("relaxed", config.relaxedCone);
     m_maps.height = config.field.get();
     m_maps.heightMax = field.maxHeight();
     m_maps.wrap = config.wrap;
@@ -214,7 +229,7 @@ Result<ProbeRun::Measured> ProbeRun::measure(const Probe& probe, bool timeCpu, d
         if (m_control.cancelled())
             return evaluationCancelled();
         const std::string key =
-            m_mapKey + "/p" + number(m_polars[p]) + "/" + probe.key + (timeCpu ? "/cpu" : "");
+            m_measureKey + "/p" + number(m_polars[p]) + "/" + probe.key + (timeCpu ? "/cpu" : "");
         std::optional<AngleMeasure> m;
         double knownAtLeast = 0.0;
         {

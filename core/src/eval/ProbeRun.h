@@ -2,8 +2,9 @@
 // Measures candidate settings of a recommendation angle by angle, steepest first, stopping at the
 // first angle a setting fails; each angle's rays and exact hits are drawn once and shared by every
 // candidate. Every measure goes through a process-wide cache keyed by the map's content, size and
-// wrap, the scale, the sampling and the candidate, so a second question about the same material
-// (another budget, the editor asking again) traces nothing it has traced before.
+// wrap, the scale, the sampling, the cone maps supplied and the candidate, so a second question
+// about the same material (another budget, the editor asking again) traces nothing it has traced
+// before.
 
 #include "RayProbe.h"
 #include "parallax/bake/MaxMipPyramid.h"
@@ -61,7 +62,8 @@ private:
     const EvalControl& m_control;
     std::uint64_t m_contentHash = 0;
     std::string m_contentKey; // content hash, size and wrap: what the derived maps depend on
-    std::string m_mapKey;     // and the scale and sampling: what the measures depend on
+    std::string m_mapKey;     // and the scale and sampling: what the exact hits depend on
+    std::string m_measureKey; // and the cone maps supplied: what the measures depend on
     std::vector<double> m_polars;
     TraceMaps m_maps;
     std::shared_ptr<const ConeMap> m_cone, m_relaxedCone;

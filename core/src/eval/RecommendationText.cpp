@@ -16,6 +16,17 @@ std::string format(const char* pattern, double value) {
     return text;
 }
 
+// "1st", "2nd", "3rd", "4th", "11th", "12th", "13th", "101st", "6101st".
+std::string ordinal(std::int64_t n) {
+    const std::int64_t tens = n % 100, units = n % 10;
+    const char* suffix = tens >= 11 && tens <= 13 ? "th"
+                         : units == 1             ? "st"
+                         : units == 2             ? "nd"
+                         : units == 3             ? "rd"
+                                                  : "th";
+    return std::to_string(n) + suffix;
+}
+
 } // namespace
 
 std::string_view budgetMetricName(BudgetMetric metric) {
@@ -82,7 +93,7 @@ std::string confidenceStatement(const RecommendConfig& c, std::int64_t n) {
     switch (c.budget.metric) {
     case BudgetMetric::P99: {
         const std::int64_t k = quantileUpperRank(n, 0.99, c.confidence);
-        return rays + ": the budget is judged on the " + std::to_string(k) + "th smallest error (" +
+        return rays + ": the budget is judged on the " + ordinal(k) + " smallest error (" +
                format("%.2f", 100.0 * static_cast<double>(k) / static_cast<double>(n)) +
                "th percentile), which is at or above the p99 of all rays with " + conf +
                " confidence";

@@ -11,10 +11,9 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/StabilitySuite.cpp
   ${CMAKE_CURRENT_LIST_DIR}/QuantileBound.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RayProbe.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/ConeCacheFile.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ProbeRun.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Recommendation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RecommendationText.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/EngineMarch.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/EngineLayers.cpp
   ${CMAKE_CURRENT_LIST_DIR}/AutoTechnique.cpp
 )

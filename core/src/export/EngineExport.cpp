@@ -49,16 +49,15 @@ Status writeUnreal(ExportJob& job) {
             return s;
         note << "  " << base << "_BC.png    Base Color: sRGB on, Compression Default\n";
     }
-    Result<Image> normals = job.normals(NormalGreen::DirectX);
+    Result<bool> normals = job.writeNormals(base + "_N.png", NormalGreen::DirectX);
     if (!normals)
         return normals.error();
-    if (!normals->empty()) {
-        if (Status s = job.image(base + "_N.png", *normals, job.options.normalFormat); !s)
-            return s;
+    if (*normals) {
         note << "  " << base << "_N.png     Normal: DirectX green (Y-) as Unreal expects; "
              << "Compression Normalmap, sRGB off, Flip Green Channel off\n";
     }
-    if (const std::optional<Image> orm = job.orm()) {
+    // Unreal's material reads the texel as the value: a missing map's channel holds the number.
+    if (const std::optional<Image> orm = job.orm(ExportJob::MissingChannel::Number)) {
         if (Status s = job.image(base + "_ORM.png", *orm, PixelFormat::UInt8); !s)
             return s;
         note << "  " << base << "_ORM.png   R = Ambient Occlusion, G = Roughness, B = Metallic: "
@@ -110,9 +109,9 @@ Status writeUnreal(ExportJob& job) {
     }
     if (!job.assets.albedo.empty())
         note << "  Base Color <- " << base << "_BC RGB\n";
-    if (!normals->empty())
+    if (*normals)
         note << "  Normal <- " << base << "_N RGB\n";
-    if (job.orm())
+    if (job.orm(ExportJob::MissingChannel::Number))
         note << "  Ambient Occlusion <- " << base << "_ORM R, Roughness <- G, Metallic <- B\n";
     else
         note << "  Roughness = " << shortestDecimal(m.roughness)
@@ -135,12 +134,10 @@ Status writeUnity(ExportJob& job) {
             return s;
         note << "  " << base << "_Albedo.png              Default, sRGB (Color Texture) on\n";
     }
-    Result<Image> normals = job.normals(NormalGreen::OpenGL);
+    Result<bool> normals = job.writeNormals(base + "_Normal.png", NormalGreen::OpenGL);
     if (!normals)
         return normals.error();
-    if (!normals->empty()) {
-        if (Status s = job.image(base + "_Normal.png", *normals, job.options.normalFormat); !s)
-            return s;
+    if (*normals) {
         note << "  " << base << "_Normal.png              Texture Type: Normal map (OpenGL green, "
              << "Y+, as Unity expects)\n";
     }

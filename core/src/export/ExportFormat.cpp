@@ -25,8 +25,4 @@ std::span<const std::string_view> exportFormatNames() {
     return kNames;
 }
 
-NormalGreen targetGreen(ExportFormat format) {
-    return format == ExportFormat::Unreal ? NormalGreen::DirectX : NormalGreen::OpenGL;
-}
-
 } // namespace px

@@ -2,7 +2,7 @@
 // One export in progress: the material, its loaded maps, the staging folder, and the helpers
 // every target's writer uses.
 
-#include "parallax/eval/EngineMarch.h"
+#include "parallax/eval/EngineLayers.h"
 #include "parallax/export/ExportFolder.h"
 #include "parallax/export/Exporter.h"
 
@@ -23,7 +23,7 @@ struct ExportJob {
     std::string stem;         // the material's name made safe for file names
     std::string materialFile; // map paths are relative to its folder
     // Technique "auto" for Godot and Unity: the layer counts the engine's own march needs
-    // (EngineMarch.h).
+    // (EngineLayers.h).
     std::optional<EngineLayersAdvice> engineLayers = std::nullopt;
 
     // Writes into the export folder and records the file. Errors name the file.
@@ -38,11 +38,16 @@ struct ExportJob {
     // converted, or one baked from the height map at the material's scale. Empty when the
     // material has neither (adds a note then).
     Result<Image> normals(NormalGreen green);
+    // Writes normals(green) as `name` at the options' bit depth; false when there is none.
+    Result<bool> writeNormals(const std::string& name, NormalGreen green);
 
-    // Occlusion (R), roughness (G), metallic (B) packed as glTF, Godot and Unreal read them;
-    // a channel without a map holds the material's constant (occlusion: 1). nullopt when the
-    // material has none of the three maps.
-    std::optional<Image> orm() const;
+    // Occlusion (R), roughness (G), metallic (B) packed as glTF, Godot and Unreal read them. A
+    // roughness or metallic channel without a map holds 1 for targets that multiply it by a
+    // factor (glTF, Godot, the package: factors from surfaceFactors()), the material's number for
+    // those that read the texel as the value (Unreal); see SurfaceFactors.h. Occlusion without a
+    // map: 1. nullopt when the material has none of the three maps.
+    enum class MissingChannel { One, Number };
+    std::optional<Image> orm(MissingChannel missing) const;
 
     // The cone map of `kind`: the loaded one, or baked from the height map (with a note).
     ConeMap cones(ConeKind kind);

@@ -12,19 +12,6 @@ Image heightImage(const HeightField& field, bool asDepth) {
     return image;
 }
 
-Image normalImage(const Image& normals, NormalGreen from, NormalGreen to) {
-    Image out(normals.width, normals.height, 3);
-    const bool flip = from != to;
-    for (int y = 0; y < normals.height; ++y) {
-        for (int x = 0; x < normals.width; ++x) {
-            out.at(x, y, 0) = normals.at(x, y, 0);
-            out.at(x, y, 1) = flip ? 1.0f - normals.at(x, y, 1) : normals.at(x, y, 1);
-            out.at(x, y, 2) = normals.at(x, y, 2);
-        }
-    }
-    return out;
-}
-
 Image coneImage(const HeightField& field, const ConeMap& cone, int bits) {
     const float steps = bits == 8 ? 255.0f : bits == 16 ? 65535.0f : 0.0f;
     Image image(field.width, field.height, 2);

@@ -1,6 +1,6 @@
 #pragma once
-// Turning a material's maps into the textures a target expects: bit depth, green convention,
-// channel packing, cone maps quantised downwards.
+// Turning a material's maps into the textures a target expects: bit depth, channel packing, cone
+// maps quantised downwards (normal maps: convertNormalMap, parallax/bake/NormalMapBaker.h).
 
 #include "parallax/bake/ConeMap.h"
 #include "parallax/heightfield/HeightField.h"
@@ -14,10 +14,6 @@ namespace px::exporter {
 
 // One channel: h (white = high), or 1 - h for a target told to read a depth map.
 Image heightImage(const HeightField& field, bool asDepth);
-
-// R, G, B of a loaded normal map with green flipped (1 - G) when the conventions differ; an
-// alpha channel is dropped (no engine reads one there).
-Image normalImage(const Image& normals, NormalGreen from, NormalGreen to);
 
 // R = height, G = sqrt(cone ratio) rounded *down* to the steps of `bits` (8 or 16; 32: float,
 // kept) so a stored cone is never wider than the baked one (docs/conventions.md §4).

@@ -82,10 +82,23 @@ Result<Image> ExportJob::normals(NormalGreen green) {
     return bakeNormalMap(assets.height, bake);
 }
 
-std::optional<Image> ExportJob::orm() const {
-    const ChannelSource sources[3] = {{&assets.ao, 0, false, 1.0f},
-                                      {&assets.roughness, 0, false, material.roughness},
-                                      {&assets.metallic, 0, false, material.metallic}};
+Result<bool> ExportJob::writeNormals(const std::string& name, NormalGreen green) {
+    Result<Image> map = normals(green);
+    if (!map)
+        return map.error();
+    if (map->empty())
+        return false;
+    if (Status s = image(name, *map, options.normalFormat); !s)
+        return s.error();
+    return true;
+}
+
+std::optional<Image> ExportJob::orm(MissingChannel missing) const {
+    const bool one = missing == MissingChannel::One;
+    const ChannelSource sources[3] = {
+        {&assets.ao, 0, false, 1.0f},
+        {&assets.roughness, 0, false, one ? 1.0f : material.roughness},
+        {&assets.metallic, 0, false, one ? 1.0f : material.metallic}};
     return packChannels(sources, 3, material.wrap);
 }
 

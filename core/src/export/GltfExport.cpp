@@ -8,6 +8,7 @@
 #include "parallax/Version.h"
 #include "parallax/material/MapContent.h"
 #include "parallax/material/MaterialFile.h"
+#include "parallax/material/SurfaceFactors.h"
 
 #include <array>
 #include <cstring>
@@ -117,9 +118,12 @@ Status writeGltf(ExportJob& job) {
             return s;
         pbr["baseColorTexture"] = texture(name);
     }
-    const std::optional<Image> orm = job.orm();
-    pbr["metallicFactor"] = orm ? 1.0 : shortestDecimal(m.metallic);
-    pbr["roughnessFactor"] = orm ? 1.0 : shortestDecimal(m.roughness);
+    // Factor x texel: the map where there is one, the number where there is not (SurfaceFactors.h).
+    const std::optional<Image> orm = job.orm(ExportJob::MissingChannel::One);
+    const SurfaceFactors factors =
+        surfaceFactors(m, !job.assets.roughness.empty(), !job.assets.metallic.empty());
+    pbr["metallicFactor"] = shortestDecimal(factors.metallic);
+    pbr["roughnessFactor"] = shortestDecimal(factors.roughness);
     if (orm) {
         const std::string name = job.stem + "_orm.png";
         if (Status s = job.image(name, *orm, PixelFormat::UInt8); !s)
@@ -129,15 +133,12 @@ Status writeGltf(ExportJob& job) {
             material["occlusionTexture"] = {{"index", textures.size() - 1}};
     }
     material["pbrMetallicRoughness"] = pbr;
-    Result<Image> normals = job.normals(NormalGreen::OpenGL);
+    const std::string normalName = job.stem + "_normal.png";
+    Result<bool> normals = job.writeNormals(normalName, NormalGreen::OpenGL);
     if (!normals)
         return normals.error();
-    if (!normals->empty()) {
-        const std::string name = job.stem + "_normal.png";
-        if (Status s = job.image(name, *normals, job.options.normalFormat); !s)
-            return s;
-        material["normalTexture"] = texture(name);
-    }
+    if (*normals)
+        material["normalTexture"] = texture(normalName);
 
     // The specular map: white is glTF's default reflection (F0 0.04) either way.
     std::string specularName;

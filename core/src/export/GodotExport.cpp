@@ -5,6 +5,7 @@
 #include "ExportJob.h"
 #include "ExportTextures.h"
 #include "io/ShortestDecimal.h"
+#include "parallax/material/SurfaceFactors.h"
 
 #include <sstream>
 
@@ -53,9 +54,12 @@ Status writeGodot(ExportJob& job) {
             return s;
         props << "albedo_texture = " << texture(name, "albedo") << "\n";
     }
-    const std::optional<Image> orm = job.orm();
-    props << "metallic = " << real(orm ? 1.0 : shortestDecimal(m.metallic)) << "\n"
-          << "roughness = " << real(orm ? 1.0 : shortestDecimal(m.roughness)) << "\n";
+    // Number x texel: the map where there is one, the number where there is not (SurfaceFactors.h).
+    const std::optional<Image> orm = job.orm(ExportJob::MissingChannel::One);
+    const SurfaceFactors factors =
+        surfaceFactors(m, !job.assets.roughness.empty(), !job.assets.metallic.empty());
+    props << "metallic = " << real(shortestDecimal(factors.metallic)) << "\n"
+          << "roughness = " << real(shortestDecimal(factors.roughness)) << "\n";
     if (orm) {
         const std::string name = job.stem + "_orm.png";
         if (Status s = job.image(name, *orm, PixelFormat::UInt8); !s)
@@ -67,15 +71,13 @@ Status writeGodot(ExportJob& job) {
         if (!job.assets.ao.empty())
             props << "ao_enabled = true\nao_texture = " << ref << "\nao_texture_channel = 0\n";
     }
-    Result<Image> normals = job.normals(NormalGreen::OpenGL);
+    const std::string normalName = job.stem + "_normal.png";
+    Result<bool> normals = job.writeNormals(normalName, NormalGreen::OpenGL);
     if (!normals)
         return normals.error();
-    if (!normals->empty()) {
-        const std::string name = job.stem + "_normal.png";
-        if (Status s = job.image(name, *normals, job.options.normalFormat); !s)
-            return s;
-        props << "normal_enabled = true\nnormal_texture = " << texture(name, "normal") << "\n";
-    }
+    if (*normals)
+        props << "normal_enabled = true\nnormal_texture = " << texture(normalName, "normal")
+              << "\n";
     const TechniqueInfo& t = info(m.technique);
     if (t.parallax) {
         // A depth map (as the artist's file was) goes out as one, with Godot told to flip it.

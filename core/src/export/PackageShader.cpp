@@ -73,11 +73,7 @@ Result<std::string> writePackageShader(ExportJob& job, const Material& packaged,
     // Absent channels hold 1, as in the renderer's: the shader multiplies them by pxRoughness and
     // pxMetallic (a missing metallic map packed as the material's 0.3 drew metallic 0.09).
     if (key.surfaceMap) {
-        const Material& m = job.material;
-        const ChannelSource sources[3] = {{&job.assets.ao, 0, false, 1.0f},
-                                          {&job.assets.roughness, 0, false, 1.0f},
-                                          {&job.assets.metallic, 0, false, 1.0f}};
-        if (std::optional<Image> orm = packChannels(sources, 3, m.wrap)) {
+        if (std::optional<Image> orm = job.orm(ExportJob::MissingChannel::One)) {
             const std::string name = job.stem + "_orm.png";
             if (Status s = job.image(name, *orm, PixelFormat::UInt8); !s)
                 return s.error();

@@ -5,6 +5,7 @@
 #include "PackageUniforms.h"
 
 #include "ExportJob.h"
+#include "parallax/material/SurfaceFactors.h"
 
 #include <cstdio>
 #include <sstream>
@@ -72,10 +73,17 @@ UniformValue uniformValue(const std::string& name, const Material& m, float heig
         return {"Blinn-Phong specular strength", number(m.specular), false};
     if (name == "pxShininess")
         return {"Blinn-Phong exponent", number(m.shininess), false};
+    // The packaged maps multiply these: 1 where a map is packaged (SurfaceFactors.h).
+    const SurfaceFactors surface =
+        surfaceFactors(m, !m.maps.roughness.empty(), !m.maps.metallic.empty());
     if (name == "pxRoughness")
-        return {"roughness where there is no roughness map", number(m.roughness), false};
+        return {"multiplies the roughness channel: the roughness where there is no roughness map, "
+                "1 where there is",
+                number(surface.roughness), false};
     if (name == "pxMetallic")
-        return {"metallic where there is no metallic map", number(m.metallic), false};
+        return {"multiplies the metallic channel: the metallic where there is no metallic map, 1 "
+                "where there is",
+                number(surface.metallic), false};
     if (name == "pxShadowSoftness")
         return {"self-shadow softness, 0 hard to 1 very soft", number(m.shadowSoftness), false};
     if (name == "pxNormalGreenSign")

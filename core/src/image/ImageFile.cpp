@@ -4,6 +4,7 @@
 #include "ImageBudget.h"
 #include "PngCheck.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/FileExtension.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -16,13 +17,6 @@
 
 namespace px {
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
 
 // OIIO's messages end with newlines and sometimes repeat the file name; keep one clean line.
 std::string oiioMessage(std::string message) {

@@ -2,39 +2,30 @@
 
 #include "parallax/image/ImageFile.h"
 
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 
 namespace px {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 constexpr int kMaxWidth = 2048;
-
-// Halves both sides with a 2 x 2 box.
-Image halved(const Image& in) {
-    Image out(in.width / 2, in.height / 2, 3);
-    for (int y = 0; y < out.height; ++y)
-        for (int x = 0; x < out.width; ++x)
-            for (int c = 0; c < 3; ++c)
-                out.at(x, y, c) =
-                    0.25f * (in.at(2 * x, 2 * y, c) + in.at(2 * x + 1, 2 * y, c) +
-                             in.at(2 * x, 2 * y + 1, c) + in.at(2 * x + 1, 2 * y + 1, c));
-    return out;
-}
 
 } // namespace
 
 glm::vec2 equirectUv(glm::vec3 d) {
     const glm::vec3 n = glm::normalize(d);
-    return {std::atan2(n.x, n.z) / (2.0f * kPi) + 0.5f,
-            std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
+    return {std::atan2(n.x, n.z) / (2.0f * std::numbers::pi_v<float>)+0.5f,
+            std::acos(std::clamp(n.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>};
 }
 
 glm::vec3 equirectDirection(glm::vec2 uv) {
-    const float phi = (uv.x - 0.5f) * 2.0f * kPi, theta = uv.y * kPi;
+    const float phi = (uv.x - 0.5f) * 2.0f * std::numbers::pi_v<float>,
+                theta = uv.y * std::numbers::pi_v<float>;
     return {std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi)};
 }
 
@@ -54,6 +45,23 @@ glm::vec3 sampleEquirect(const Image& map, glm::vec3 direction) {
            fy * ((1.0f - fx) * texel(x0, y0 + 1) + fx * texel(x0 + 1, y0 + 1));
 }
 
+Image resampledEnvironment(const Image& map, int width) {
+    const int height = std::max(1, width / 2);
+    if (map.width == width && map.height == height)
+        return map;
+    // A tent filter as wide as the ratio: every source texel counts by its area, whatever the
+    // ratio, and no texel comes out negative (a windowed sinc rings below zero around the sun).
+    const OIIO::ImageBuf source(
+        OIIO::ImageSpec(map.width, map.height, map.channels, OIIO::TypeDesc::FLOAT),
+        const_cast<float*>(map.pixels.data())); // only read
+    OIIO::ImageBuf resampled(OIIO::ImageSpec(width, height, map.channels, OIIO::TypeDesc::FLOAT));
+    OIIO::ImageBufAlgo::resize(resampled, source, "triangle");
+    Image out(width, height, map.channels);
+    resampled.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, map.channels),
+                         OIIO::TypeDesc::FLOAT, out.pixels.data());
+    return out;
+}
+
 Result<Image> loadEnvironment(const std::string& path) {
     Result<Image> read = readImage(path);
     if (!read)
@@ -63,11 +71,13 @@ Result<Image> loadEnvironment(const std::string& path) {
         return fileError(path, "is " + std::to_string(in.width) + " x " +
                                    std::to_string(in.height) +
                                    "; an equirectangular environment is twice as wide as high");
+    // Grey (with or without alpha) is grey in every channel; alpha is no light.
+    const int colours = in.channels >= 3 ? 3 : 1;
     Image rgb(in.width, in.height, 3);
     for (int y = 0; y < in.height; ++y) {
         for (int x = 0; x < in.width; ++x) {
             for (int c = 0; c < 3; ++c) {
-                const float v = in.at(x, y, std::min(c, in.channels - 1));
+                const float v = in.at(x, y, std::min(c, colours - 1));
                 if (v < 0.0f)
                     return fileError(path, "has negative radiance at texel (" + std::to_string(x) +
                                                ", " + std::to_string(y) + ")");
@@ -75,8 +85,8 @@ Result<Image> loadEnvironment(const std::string& path) {
             }
         }
     }
-    while (rgb.width > kMaxWidth)
-        rgb = halved(rgb);
+    if (rgb.width > kMaxWidth)
+        return resampledEnvironment(rgb, kMaxWidth);
     return rgb;
 }
 

@@ -5,13 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 #include <tbb/parallel_for.h>
 
 namespace px {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 // Hammersley point i of n (radical inverse in base 2).
 glm::vec2 hammersley(unsigned i, unsigned n) {
@@ -27,32 +26,13 @@ glm::vec2 hammersley(unsigned i, unsigned n) {
 
 // A half vector drawn from GGX's distribution of normals around n (alpha = roughness^2).
 glm::vec3 sampleGgx(glm::vec2 xi, glm::vec3 n, float alpha) {
-    const float phi = 2.0f * kPi * xi.x;
+    const float phi = 2.0f * std::numbers::pi_v<float> * xi.x;
     const float cosTheta = std::sqrt((1.0f - xi.y) / (1.0f + (alpha * alpha - 1.0f) * xi.y));
     const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
     const glm::vec3 up = std::abs(n.y) < 0.999f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
     const glm::vec3 tx = glm::normalize(glm::cross(up, n)), ty = glm::cross(n, tx);
     return glm::normalize(tx * (sinTheta * std::cos(phi)) + ty * (sinTheta * std::sin(phi)) +
                           n * cosTheta);
-}
-
-Image resized(const Image& in, int width) {
-    Image out(width, width / 2, 3);
-    // Box-average the source texels under each output texel (the source is at least as large).
-    const int fx = std::max(1, in.width / out.width), fy = std::max(1, in.height / out.height);
-    for (int y = 0; y < out.height; ++y) {
-        for (int x = 0; x < out.width; ++x) {
-            glm::vec3 sum(0.0f);
-            for (int j = 0; j < fy; ++j)
-                for (int i = 0; i < fx; ++i)
-                    for (int c = 0; c < 3; ++c)
-                        sum[c] += in.at(std::min(x * fx + i, in.width - 1),
-                                        std::min(y * fy + j, in.height - 1), c);
-            for (int c = 0; c < 3; ++c)
-                out.at(x, y, c) = sum[c] / static_cast<float>(fx * fy);
-        }
-    }
-    return out;
 }
 
 // Real SH basis, bands 0-2.
@@ -71,8 +51,9 @@ std::array<float, 9> basis(glm::vec3 d) {
 IrradianceSh projectIrradiance(const Image& map) {
     IrradianceSh sh{};
     for (int y = 0; y < map.height; ++y) {
-        const float theta = (y + 0.5f) / map.height * kPi;
-        const float solidAngle = (2.0f * kPi / map.width) * (kPi / map.height) * std::sin(theta);
+        const float theta = (y + 0.5f) / map.height * std::numbers::pi_v<float>;
+        const float solidAngle = (2.0f * std::numbers::pi_v<float> / map.width) *
+                                 (std::numbers::pi_v<float> / map.height) * std::sin(theta);
         for (int x = 0; x < map.width; ++x) {
             const glm::vec3 d =
                 equirectDirection({(x + 0.5f) / map.width, (y + 0.5f) / map.height});
@@ -106,7 +87,7 @@ glm::vec3 prefiltered(const std::vector<Image>& pyramid, glm::vec3 n, float roug
                       unsigned samples) {
     const float alpha = roughness * roughness;
     const float texelSolidAngle =
-        4.0f * kPi / static_cast<float>(pyramid[0].width * pyramid[0].height);
+        4.0f * std::numbers::pi_v<float> / static_cast<float>(pyramid[0].width * pyramid[0].height);
     glm::vec3 sum(0.0f);
     float weight = 0.0f;
     for (unsigned i = 0; i < samples; ++i) {
@@ -117,7 +98,8 @@ glm::vec3 prefiltered(const std::vector<Image>& pyramid, glm::vec3 n, float roug
             continue;
         const float NdotH = std::max(glm::dot(n, h), 0.0f);
         const float a2 = alpha * alpha, dd = NdotH * NdotH * (a2 - 1.0f) + 1.0f;
-        const float pdf = a2 / (kPi * dd * dd) / 4.0f; // D NdotH / (4 VdotH), v = n
+        const float pdf =
+            a2 / (std::numbers::pi_v<float> * dd * dd) / 4.0f; // D NdotH / (4 VdotH), v = n
         const float sampleSolidAngle = 1.0f / (static_cast<float>(samples) * pdf + 1e-6f);
         const float level = 0.5f * std::log2(sampleSolidAngle / texelSolidAngle) + 1.0f;
         sum += samplePyramid(pyramid, l, level) * NdotL;
@@ -138,12 +120,12 @@ glm::vec3 irradianceAt(const IrradianceSh& sh, glm::vec3 n) {
 
 PrefilteredEnvironment prefilterEnvironment(const Image& map, int baseWidth, int levels) {
     PrefilteredEnvironment out;
-    const Image source = map.width > 2 * baseWidth ? resized(map, 2 * baseWidth) : map;
-    out.irradiance = projectIrradiance(resized(source, std::min(source.width, 128)));
+    const Image source = map.width > 2 * baseWidth ? resampledEnvironment(map, 2 * baseWidth) : map;
+    out.irradiance = projectIrradiance(resampledEnvironment(source, std::min(source.width, 128)));
     std::vector<Image> pyramid{source};
     while (pyramid.back().width > 2)
-        pyramid.push_back(resized(pyramid.back(), pyramid.back().width / 2));
-    out.specular.push_back(resized(source, std::min(source.width, baseWidth)));
+        pyramid.push_back(resampledEnvironment(pyramid.back(), pyramid.back().width / 2));
+    out.specular.push_back(resampledEnvironment(source, std::min(source.width, baseWidth)));
     for (int level = 1; level < levels; ++level) {
         const float roughness = static_cast<float>(level) / static_cast<float>(levels - 1);
         Image img(std::max(2, out.specular[0].width >> level),

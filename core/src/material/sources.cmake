@@ -12,6 +12,7 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/MaterialNames.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MaterialValidate.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ReliefReading.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/SurfaceFactors.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TextureSet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TextureSetImport.cpp
 )

@@ -1,5 +1,6 @@
 #include "parallax/mesh/MeshLoader.h"
 
+#include "parallax/io/FileExtension.h"
 #include "parallax/mesh/TangentFrames.h"
 
 #include <algorithm>
@@ -34,13 +35,6 @@ private:
     std::function<bool(float)> m_report;
     bool& m_cancelled;
 };
-
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
 
 bool finite(const aiVector3D& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -4,6 +4,7 @@
 #include "parallax/bake/ConeMapBaker.h"
 
 #include "ConeChecks.h"
+#include "parallax/bake/ConeMapFinish.h"
 #include "parallax/bake/ConeMapReference.h"
 #include "parallax/sample/ProceduralMaps.h"
 

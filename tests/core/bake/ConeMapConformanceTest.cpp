@@ -6,7 +6,7 @@
 #include "ConeChecks.h"
 #include "TestSupport.h"
 #include "parallax/bake/ConeMapBaker.h"
-#include "parallax/bake/ConeMapReference.h"
+#include "parallax/bake/ConeMapFinish.h"
 #include "parallax/heightfield/HeightFieldLoader.h"
 #include "parallax/image/ImageFile.h"
 

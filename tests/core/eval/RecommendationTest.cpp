@@ -6,6 +6,8 @@
 
 #include "parallax/eval/Recommendation.h"
 
+#include "TestSupport.h"
+#include "parallax/bake/ConeMapBaker.h"
 #include "parallax/eval/HitErrorStats.h"
 #include "parallax/eval/QuantileBound.h"
 #include "parallax/sample/ProceduralMaps.h"
@@ -17,6 +19,7 @@
 #include <map>
 #include <mutex>
 #include <random>
+#include <set>
 
 using namespace px;
 
@@ -27,10 +30,12 @@ private slots:
     void init() { clearRecommendationCache(); }
     void quantileRankIsTheBinomialBound();
     void screenDensity();
+    void confidenceStatementSaysItsOrdinal();
     void meetsBudgetAtLeastCostAgainstFullSweep_data();
     void meetsBudgetAtLeastCostAgainstFullSweep();
     void maxBudgetStatementHoldsOnFullMeasurement();
     void sameInputSameAnswerAndCached();
+    void suppliedConeMapsAreMeasuredAsSupplied();
     void cappedMarchesTakeACapThatDoesNotBind();
     void givingUpDearerSettingsChangesNothing_data();
     void givingUpDearerSettingsChangesNothing();
@@ -198,18 +203,51 @@ void RecommendationTest::screenDensity() {
     QVERIFY(!texelsPerPixel(d).ok());
 }
 
+// "the 6101st smallest error", not "6101th": every rank the statement can name, with English
+// ordinals (1st, 2nd, 3rd, but 11th, 12th, 13th).
+void RecommendationTest::confidenceStatementSaysItsOrdinal() {
+    const RecommendConfig config = testConfig(testMap("smooth", 1));
+    const char* units[] = {"th", "st", "nd", "rd", "th", "th", "th", "th", "th", "th"};
+    std::set<std::string> suffixes;
+    for (std::int64_t n = 459; n <= 7000; n += 7) {
+        const std::int64_t k = quantileUpperRank(n, 0.99, config.confidence);
+        const std::string suffix = k % 100 >= 11 && k % 100 <= 13 ? "th" : units[k % 10];
+        suffixes.insert(suffix + (k % 100 >= 11 && k % 100 <= 13 ? " (teen)" : ""));
+        const std::string expected = " the " + std::to_string(k) + suffix + " smallest error ";
+        const std::string statement = confidenceStatement(config, n);
+        QVERIFY2(statement.find(expected) != std::string::npos,
+                 qPrintable(QString("%1 rays: %2").arg(n).arg(statement.c_str())));
+    }
+    QCOMPARE(suffixes, (std::set<std::string>{"st", "nd", "rd", "th", "th (teen)"}));
+    // recommend's default: 6144 rays per angle.
+    QVERIFY(confidenceStatement(config, 6144).find(" the 6101st smallest error ") !=
+            std::string::npos);
+}
+
 void RecommendationTest::meetsBudgetAtLeastCostAgainstFullSweep_data() {
     QTest::addColumn<QString>("kind");
     QTest::addColumn<unsigned>("seed");
     QTest::addColumn<double>("budget");
-    QTest::newRow("smooth 0.5") << "smooth" << 3u << 0.5;
-    QTest::newRow("stepped 0.5") << "stepped" << 5u << 0.5;
-    QTest::newRow("spiky 0.5") << "spiky" << 7u << 0.5;
-    QTest::newRow("8-bit 0.5") << "8bit" << 11u << 0.5;
-    QTest::newRow("8-bit 0.1") << "8bit" << 13u << 0.1;
-    QTest::newRow("bricks 2") << "bricks" << 1u << 2.0;
-    QTest::newRow("spike-flat 0.5") << "spike-flat" << 31u << 0.5;
-    QTest::newRow("jpeg 0.5") << "jpeg" << 33u << 0.5;
+    // PX_TEST_SHARD splits these rows, the suite's dearest, between ctest's shards (main()).
+    const test::TestShard shard = test::testShard();
+    const struct {
+        const char* name;
+        const char* kind;
+        unsigned seed;
+        double budget;
+    } rows[] = {
+        {"smooth 0.5", "smooth", 3u, 0.5},
+        {"stepped 0.5", "stepped", 5u, 0.5},
+        {"spiky 0.5", "spiky", 7u, 0.5},
+        {"8-bit 0.5", "8bit", 11u, 0.5},
+        {"8-bit 0.1", "8bit", 13u, 0.1},
+        {"bricks 2", "bricks", 1u, 2.0},
+        {"spike-flat 0.5", "spike-flat", 31u, 0.5},
+        {"jpeg 0.5", "jpeg", 33u, 0.5},
+    };
+    for (std::size_t i = 0; i < std::size(rows); ++i)
+        if (shard.takes(i))
+            QTest::newRow(rows[i].name) << QString(rows[i].kind) << rows[i].seed << rows[i].budget;
 }
 
 void RecommendationTest::meetsBudgetAtLeastCostAgainstFullSweep() {
@@ -324,7 +362,7 @@ void RecommendationTest::maxBudgetStatementHoldsOnFullMeasurement() {
 }
 
 void RecommendationTest::sameInputSameAnswerAndCached() {
-    RecommendConfig config = testConfig(testMap("bricks", 2));
+    RecommendConfig config = testConfig(testMap("8bit", 2));
     Result<Recommendation> a = recommend(config);
     QVERIFY(a.ok() && a->found);
     QVERIFY(a->measuredAngles > 0);
@@ -336,17 +374,66 @@ void RecommendationTest::sameInputSameAnswerAndCached() {
     QCOMPARE(b->chosen.angles.front().p99Bound, a->chosen.angles.front().p99Bound);
     QCOMPARE(b->measured.size(), a->measured.size());
 
-    // Asked again (another budget too): nothing is traced that was traced before.
+    // Asked again, the same question: nothing is traced that was traced before.
     Result<Recommendation> c = recommend(config);
     QVERIFY(c.ok());
     QCOMPARE(c->measuredAngles, 0);
     // (A capped ladder's top is looked up twice, the steepest angle first: orderCappedLadders().)
     QCOMPARE(c->cachedAngles, b->measuredAngles + b->cachedAngles);
     QCOMPARE(keyOf(c->chosen.setting), keyOf(a->chosen.setting));
+    // Another budget: what the first budget measured is answered from the cache, the rest traced,
+    // and the answer is the one a cold run gives.
+    RecommendConfig tighter = config;
+    tighter.budget.texels = 0.1;
+    Result<Recommendation> warm = recommend(tighter);
+    QVERIFY(warm.ok() && warm->found);
+    clearRecommendationCache();
+    Result<Recommendation> cold = recommend(tighter);
+    QVERIFY(cold.ok() && cold->found);
+    QCOMPARE(keyOf(warm->chosen.setting), keyOf(cold->chosen.setting));
+    QCOMPARE(warm->chosen.cost, cold->chosen.cost);
+    QVERIFY(warm->cachedAngles > cold->cachedAngles);
+    QVERIFY2(warm->measuredAngles < cold->measuredAngles,
+             qPrintable(QString("traced %1 angles warm, %2 cold")
+                            .arg(warm->measuredAngles)
+                            .arg(cold->measuredAngles)));
+    QVERIFY2(keyOf(cold->chosen.setting) != keyOf(a->chosen.setting), "the budget changed nothing");
     // A different scale is a different material: measured afresh.
     config.scale = 0.08f;
     Result<Recommendation> d = recommend(config);
     QVERIFY(d.ok() && d->measuredAngles > 0);
+}
+
+// The editor supplies its own baked cone maps: a map 10x narrower than the one measured before in
+// the same process is measured afresh (the cache once answered with the old map's figures), and
+// the answer is a cold run's; the same map supplied again is answered from the cache.
+void RecommendationTest::suppliedConeMapsAreMeasuredAsSupplied() {
+    RecommendConfig config = testConfig(testMap("bricks", 9));
+    config.techniques = {Technique::Cone};
+    Result<Recommendation> baked = recommend(config);
+    QVERIFY(baked.ok() && baked->found);
+    ConeMap narrow = bakeConeMap(*config.field, config.wrap, ConeKind::Conservative);
+    for (float& g : narrow.sqrtRatio)
+        g /= std::sqrt(10.0f); // ratio / 10: still safe, slower
+    config.cone = std::make_shared<const ConeMap>(narrow);
+    Result<Recommendation> supplied = recommend(config);
+    QVERIFY(supplied.ok() && supplied->found);
+    QVERIFY(supplied->measuredAngles > 0);
+    QVERIFY2(supplied->chosen.cost > baked->chosen.cost,
+             qPrintable(QString("%1 fetches with cones 10x narrower, %2 with the baked ones")
+                            .arg(supplied->chosen.cost)
+                            .arg(baked->chosen.cost)));
+    clearRecommendationCache();
+    Result<Recommendation> cold = recommend(config);
+    QVERIFY(cold.ok());
+    QCOMPARE(keyOf(supplied->chosen.setting), keyOf(cold->chosen.setting));
+    QCOMPARE(supplied->chosen.cost, cold->chosen.cost);
+    // An equal copy, supplied again: nothing traced.
+    config.cone = std::make_shared<const ConeMap>(narrow);
+    Result<Recommendation> again = recommend(config);
+    QVERIFY(again.ok());
+    QCOMPARE(again->measuredAngles, 0);
+    QCOMPARE(again->chosen.cost, cold->chosen.cost);
 }
 
 void RecommendationTest::cappedMarchesTakeACapThatDoesNotBind() {
@@ -497,5 +584,15 @@ void RecommendationTest::invalidInput() {
     QCOMPARE(message(c), std::string("'normal' traces no rays: it cannot be chosen"));
 }
 
-QTEST_GUILESS_MAIN(RecommendationTest)
+// ctest runs the full sweeps in shards (PX_TEST_SHARD=i/n, tests/core/eval/CMakeLists.txt): the
+// first shard runs every check with its rows of the sweep, the others only their rows of it.
+int main(int argc, char** argv) {
+    QCoreApplication app(argc, argv);
+    RecommendationTest test;
+    if (test::testShard().index == 0 || argc > 1)
+        return QTest::qExec(&test, argc, argv);
+    char sweep[] = "meetsBudgetAtLeastCostAgainstFullSweep";
+    char* args[] = {argv[0], sweep};
+    return QTest::qExec(&test, 2, args);
+}
 #include "RecommendationTest.moc"

@@ -288,12 +288,15 @@ void ExporterTest::gltfDescribesPlaneMaterialAndExtras() {
         QVERIFY(fs::exists(path("out/" + image["uri"].get<std::string>())));
     // Normals in glTF's convention (OpenGL, Y+): the DirectX file's green is flipped.
     QVERIFY(std::abs(read("out/bricks_normal.png").at(1, 1, 1) - 0.75f) < 1.0f / 255);
-    // ORM: occlusion in R, roughness in G (resampled from 16x8), metallic constant in B.
+    // ORM: occlusion in R, roughness in G (resampled from 16x8), no metallic map: 1 in B and the
+    // material's metallic as the factor, exactly (SurfaceFactors.h); the roughness map's factor 1.
     const Image orm = read("out/bricks_orm.png");
     QCOMPARE(orm.width, 32);
     QVERIFY(std::abs(orm.at(4, 4, 0) - 0.6f) < 1.0f / 255);
     QVERIFY(std::abs(orm.at(4, 4, 1) - 0.3f) < 1.0f / 255);
-    QVERIFY(std::abs(orm.at(4, 4, 2) - 0.25f) < 1.0f / 255);
+    QCOMPARE(orm.at(4, 4, 2), 1.0f);
+    QCOMPARE(pbr["metallicFactor"].get<double>(), 0.25);
+    QCOMPARE(pbr["roughnessFactor"].get<double>(), 1.0);
     // The height parameters: the material itself, maps renamed to the exported files.
     const nlohmann::json& extras = material["extras"]["parallaxStudio"];
     QCOMPARE(extras["format"].get<std::string>(), std::string("parallax-studio-material"));

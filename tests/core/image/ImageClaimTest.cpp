@@ -1,13 +1,16 @@
 // Headers that claim more than the file can hold or the machine can allocate are refused before
-// any pixel memory is taken: PNG, JPEG, TIFF and EXR, each written small and then patched.
+// any pixel memory is taken (the read runs with too little address space for the pixels): PNG,
+// JPEG, TIFF and EXR, each written small and then patched.
 
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
-#include <chrono>
 #include <cstdint>
+#include <fstream>
+#include <sys/resource.h>
+#include <unistd.h>
 
 using namespace px;
 
@@ -32,6 +35,36 @@ void putLittle32(std::string& bytes, std::size_t at, std::uint32_t value) {
     for (int i = 0; i < 4; ++i)
         bytes[at + i] = static_cast<char>((value >> (8 * i)) & 0xff);
 }
+
+// Limits the process's address space to what it has now plus `headroom` while it lives: an
+// allocation beyond that fails at once, however lazily the system would have backed it. Not under
+// AddressSanitizer, whose shadow memory needs terabytes of address space.
+class AddressSpaceCap {
+public:
+    explicit AddressSpaceCap(long long headroom) {
+#if !defined(__SANITIZE_ADDRESS__)
+        long pages = 0;
+        std::ifstream("/proc/self/statm") >> pages;
+        getrlimit(RLIMIT_AS, &m_old);
+        rlimit capped = m_old;
+        capped.rlim_cur = static_cast<rlim_t>(pages) * static_cast<rlim_t>(sysconf(_SC_PAGESIZE)) +
+                          static_cast<rlim_t>(headroom);
+        m_set = setrlimit(RLIMIT_AS, &capped) == 0;
+#else
+        (void)headroom;
+#endif
+    }
+    ~AddressSpaceCap() {
+        if (m_set)
+            setrlimit(RLIMIT_AS, &m_old);
+    }
+    AddressSpaceCap(const AddressSpaceCap&) = delete;
+    AddressSpaceCap& operator=(const AddressSpaceCap&) = delete;
+
+private:
+    rlimit m_old{};
+    bool m_set = false;
+};
 
 } // namespace
 
@@ -129,18 +162,18 @@ void ImageClaimTest::hugeClaimsRefusedAtOnce() {
 
     ImageReadOptions options;
     options.maxSide = 1 << 30; // as --allow-large: the claim itself must be judged
-    const auto start = std::chrono::steady_clock::now();
-    const Result<Image> image = readImage(file, options);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Result<Image> image = Image{};
+    {
+        // Every claim here is 4 GB of pixels or more: with 2 GB more address space than the
+        // process has, taking pixel memory for it fails, and the message would say so instead.
+        const AddressSpaceCap cap(2LL << 30);
+        image = readImage(file, options);
+    }
     QVERIFY(!image.ok());
     const QString message = QString::fromStdString(image.error().message);
     QVERIFY2(message.startsWith(QString::fromStdString(file) + ": "), qPrintable(message));
     QVERIFY2(message.contains(QRegularExpression(reason)), qPrintable(message));
-    qInfo("%s: refused in %.3f s: %s", qPrintable(name), seconds, qPrintable(message));
-    // A refusal from the header reads nothing else: far under the seconds a 4 GB allocation
-    // took. A hang guard, not a speed target.
-    QVERIFY2(seconds < 2.0, qPrintable(QString::number(seconds)));
+    qInfo("%s: refused: %s", qPrintable(name), qPrintable(message));
 }
 
 // The file-size bound must not refuse a real file: a flat image is the best case of every

@@ -1,6 +1,6 @@
 // Maps share their texels between copies until one writes: a copy of an 8192² map costs a
-// pointer, a write never shows in another copy, and a grey image read from a file becomes a
-// height field without a second buffer.
+// pointer, a write never shows in another copy (also after the writer stopped checking, and across
+// threads), and a grey image read from a file becomes a height field without a second buffer.
 
 #include "parallax/bake/ConeMap.h"
 #include "parallax/heightfield/HeightField.h"
@@ -10,6 +10,7 @@
 
 #include <QtTest>
 #include <algorithm>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -51,6 +52,87 @@ private slots:
         QVERIFY(SharedTexels<float>() == SharedTexels<float>());
         QCOMPARE(SharedTexels<float>().size(), std::size_t(0));
         QVERIFY(SharedTexels<float>().begin() == SharedTexels<float>().end());
+    }
+
+    // A writer that owns its texels writes in place without looking at the share count; a copy
+    // made afterwards, in any way, takes that back: the next write on either side detaches, and
+    // the other keeps its texels.
+    void copiesAfterInPlaceWritesStillDetach() {
+        auto owner = [] {
+            Image image(8, 8, 1);
+            image.at(1, 1) = 1.0f; // owns its texels now, writes in place from here on
+            return image;
+        };
+        {
+            Image a = owner();
+            const Image b = a; // copy construction
+            a.at(1, 1) = 2.0f;
+            QCOMPARE(b.at(1, 1), 1.0f);
+            QVERIFY(!a.pixels.sharesWith(b.pixels));
+        }
+        {
+            Image a = owner();
+            const Image& view = a;
+            Image b(view); // from a const reference
+            b.pixels[9] = 3.0f;
+            QCOMPARE(a.at(1, 1), 1.0f);
+            a.pixels.data()[9] = 4.0f;
+            QCOMPARE(b.at(1, 1), 3.0f);
+        }
+        {
+            Image a = owner(), b = owner();
+            b.at(2, 2) = 5.0f; // b owns its own texels
+            b = a;             // copy assignment: b forgets them
+            b.at(3, 3) = 6.0f;
+            QCOMPARE(a.at(3, 3), 0.0f);
+            *a.pixels.begin() = 7.0f;
+            QCOMPARE(b.at(0, 0), 0.0f);
+        }
+        {
+            Image a = owner();
+            const float* texels = std::as_const(a).pixels.data();
+            Image moved = std::move(a); // a move keeps the owner an owner: writes stay in place
+            moved.at(4, 4) = 8.0f;
+            QCOMPARE(std::as_const(moved).pixels.data(), texels);
+            Image other = owner();
+            other = std::move(moved);
+            other.at(5, 5) = 9.0f;
+            QCOMPARE(std::as_const(other).pixels.data(), texels);
+        }
+    }
+
+    // Copies read on other threads and let go there; then the owner writes in place (one buffer,
+    // no copy), and every copy read exactly the texels it was given. A copy still held elsewhere
+    // makes the owner detach.
+    void copiesOnOtherThreads() {
+        for (int round = 0; round < 20; ++round) {
+            HeightField field(128, 128, static_cast<float>(round));
+            field.at(0, 0) = -1.0f; // the owner's own texels
+            const float* texels = std::as_const(field).texels.data();
+            std::vector<double> sums(4, 0.0);
+            std::vector<std::thread> readers;
+            for (std::size_t k = 0; k < sums.size(); ++k) {
+                readers.emplace_back([copy = field, &sum = sums[k]] {
+                    for (float h : copy.texels)
+                        sum += h;
+                });
+            }
+            for (std::thread& t : readers)
+                t.join();
+            for (double sum : sums)
+                QCOMPARE(sum, round * (128.0 * 128.0 - 1.0) - 1.0);
+            field.at(7, 7) = 2.0f;
+            QCOMPARE(std::as_const(field).texels.data(), texels); // the last owner: in place
+
+            HeightField held = field;
+            float seen = 0.0f;
+            std::thread holder([&held, &seen] { seen = std::as_const(held).at(7, 7); });
+            holder.join();
+            QCOMPARE(seen, 2.0f);
+            field.at(7, 7) = 3.0f; // `held` still shares them: detach
+            QVERIFY(std::as_const(field).texels.data() != texels);
+            QCOMPARE(held.at(7, 7), 2.0f);
+        }
     }
 
     // A moved-from map is empty, as a moved-from vector is; its old texels live on in the target.

@@ -9,8 +9,11 @@
 #include <OpenImageIO/imageio.h>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <random>
+#include <vector>
 
 using namespace px;
 
@@ -36,6 +39,60 @@ glm::dvec3 directIrradiance(const Image& map, glm::vec3 n) {
     return sum / kPi;
 }
 
+// Mean radiance weighted by each texel's solid angle.
+double meanRadiance(const Image& img) {
+    double sum = 0.0, weight = 0.0;
+    for (int y = 0; y < img.height; ++y) {
+        const double w = std::sin((y + 0.5) / img.height * kPi);
+        for (int x = 0; x < img.width; ++x) {
+            sum += w * img.at(x, y, 0);
+            weight += w;
+        }
+    }
+    return sum / weight;
+}
+
+// The real spherical-harmonic basis, bands 0-2, as EnvironmentLighting.h orders it.
+std::array<double, 9> shBasis(glm::dvec3 d) {
+    return {0.282095,
+            0.488603 * d.y,
+            0.488603 * d.z,
+            0.488603 * d.x,
+            1.092548 * d.x * d.y,
+            1.092548 * d.y * d.z,
+            0.315392 * (3.0 * d.z * d.z - 1.0),
+            1.092548 * d.x * d.z,
+            0.546274 * (d.x * d.x - d.y * d.y)};
+}
+
+// The nine coefficients of E / pi projected from every texel of the map in double precision:
+// what the prefilter computes from its 128-wide copy of the map.
+std::array<glm::dvec3, 9> directCoefficients(const Image& map) {
+    const double band[9] = {1.0, 2.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0, 0.25, 0.25, 0.25, 0.25, 0.25};
+    std::array<glm::dvec3, 9> sh{};
+    for (int y = 0; y < map.height; ++y) {
+        const double theta = (y + 0.5) / map.height * kPi;
+        const double solidAngle = (2.0 * kPi / map.width) * (kPi / map.height) * std::sin(theta);
+        for (int x = 0; x < map.width; ++x) {
+            const glm::dvec3 d(
+                equirectDirection({(x + 0.5f) / map.width, (y + 0.5f) / map.height}));
+            const std::array<double, 9> b = shBasis(d);
+            const glm::dvec3 radiance(map.at(x, y, 0), map.at(x, y, 1), map.at(x, y, 2));
+            for (int i = 0; i < 9; ++i)
+                sh[i] += radiance * (b[i] * solidAngle * band[i]);
+        }
+    }
+    return sh;
+}
+
+glm::dvec3 shIrradiance(const std::array<glm::dvec3, 9>& sh, glm::dvec3 n) {
+    const std::array<double, 9> b = shBasis(glm::normalize(n));
+    glm::dvec3 e(0.0);
+    for (int i = 0; i < 9; ++i)
+        e += sh[i] * b[i];
+    return e;
+}
+
 glm::vec3 texel(const Image& img, int x, int y) {
     return {img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2)};
 }
@@ -50,10 +107,13 @@ private slots:
     void mappingRoundTrips();
     void constantEnvironmentIsAWhiteFurnace();
     void irradianceMatchesDirectIntegration();
+    void anyWidthLightsAsItsTexelsSay();
     void roughnessSpreadsTheSun();
     void splitSumTableIsBounded();
     void skyHasItsSunWhereAsked();
     void loadsEquirectangularFiles();
+    void largeFilesShrinkToTwoToOne();
+    void greyWithAlphaIsGrey();
     void badFilesAreClearErrors();
 
 private:
@@ -111,30 +171,92 @@ void EnvironmentTest::irradianceMatchesDirectIntegration() {
     QVERIFY(irradianceAt(env.irradiance, {0, 1, 0}).z > irradianceAt(env.irradiance, {0, -1, 0}).z);
 }
 
+// Maps of any width light as the sum over their own texels says, not only widths that are a
+// multiple of the prefilter's (a 1000-wide map was once cropped to its first 512 columns): white
+// over half of the sphere, split across u or v (its irradiance is exactly the nine coefficients'
+// bands 0 and 1: against the direct sum), and random bright patches on a dim ground, seeded
+// (against the nine coefficients projected from every original texel).
+void EnvironmentTest::anyWidthLightsAsItsTexelsSay() {
+    std::mt19937 rng(31);
+    const glm::vec3 normals[] = {{1, 0, 0},
+                                 {-1, 0, 0},
+                                 {0, 1, 0},
+                                 {0, -1, 0},
+                                 {0, 0, 1},
+                                 {0, 0, -1},
+                                 glm::normalize(glm::vec3(0.3f, -0.5f, 0.8f)),
+                                 glm::normalize(glm::vec3(-0.7f, 0.2f, -0.4f))};
+    for (int width : {1000, 1500, 1022, 666, 202}) {
+        for (const char* kind : {"left half", "top half", "patches"}) {
+            Image map(width, width / 2, 3);
+            std::uniform_int_distribution<int> cx(0, width - 1), cy(0, width / 2 - 1);
+            std::vector<std::pair<int, int>> patches;
+            for (int k = 0; k < 6; ++k)
+                patches.emplace_back(cx(rng), cy(rng));
+            for (int y = 0; y < map.height; ++y) {
+                for (int x = 0; x < map.width; ++x) {
+                    float v = 0.0f;
+                    if (kind[0] == 'l')
+                        v = 2 * x < map.width ? 1.0f : 0.0f;
+                    else if (kind[0] == 't')
+                        v = 2 * y < map.height ? 1.0f : 0.0f;
+                    else
+                        for (auto [px, py] : patches)
+                            v += std::abs(x - px) < width / 20 && std::abs(y - py) < width / 40
+                                     ? 8.0f
+                                     : 0.02f;
+                    for (int c = 0; c < 3; ++c)
+                        map.at(x, y, c) = v * (1.0f + 0.25f * c);
+                }
+            }
+            const PrefilteredEnvironment env = prefilterEnvironment(map, 256, 2);
+            const std::array<glm::dvec3, 9> original = directCoefficients(map);
+            double brightest = 0.0, worst = 0.0, worstSh = 0.0;
+            for (glm::vec3 n : normals)
+                brightest = std::max(brightest, glm::length(shIrradiance(original, n)));
+            for (glm::vec3 n : normals) {
+                const glm::dvec3 sh(irradianceAt(env.irradiance, n));
+                // Against the nine coefficients of the original texels: only the resampling
+                // differs (the patches' light is not smooth enough for nine coefficients to
+                // hold it to a few percent; the halves' is).
+                worstSh =
+                    std::max(worstSh, glm::length(sh - shIrradiance(original, n)) / brightest);
+                if (kind[0] != 'p')
+                    worst = std::max(worst, glm::length(sh - directIrradiance(map, n)) / brightest);
+            }
+            QVERIFY2(worst < 0.01 && worstSh < 0.005,
+                     qPrintable(QString("%1 x %2, %3: irradiance %4 % off, %5 % off the "
+                                        "coefficients of every texel")
+                                    .arg(width)
+                                    .arg(width / 2)
+                                    .arg(kind)
+                                    .arg(100.0 * worst)
+                                    .arg(100.0 * worstSh)));
+            // The mirror level keeps the map's light too.
+            const double mean = meanRadiance(map), mirror = meanRadiance(env.specular[0]);
+            QVERIFY2(std::abs(mirror / mean - 1.0) < 0.01,
+                     qPrintable(QString("%1, %2: mirror mean %3 against %4")
+                                    .arg(width)
+                                    .arg(kind)
+                                    .arg(mirror)
+                                    .arg(mean)));
+        }
+    }
+}
+
 // Rougher levels spread the sun: its peak falls level by level while the map's mean radiance
 // (solid-angle weighted) stays.
 void EnvironmentTest::roughnessSpreadsTheSun() {
     const glm::vec3 sun = glm::normalize(glm::vec3(-0.3f, 0.7f, 0.5f));
     const PrefilteredEnvironment env = prefilterEnvironment(makeSkyEnvironment(sun, 512), 128, 5);
-    auto mean = [](const Image& img) {
-        double sum = 0.0, weight = 0.0;
-        for (int y = 0; y < img.height; ++y) {
-            const double w = std::sin((y + 0.5) / img.height * kPi);
-            for (int x = 0; x < img.width; ++x) {
-                sum += w * img.at(x, y, 0);
-                weight += w;
-            }
-        }
-        return sum / weight;
-    };
-    const double mean0 = mean(env.specular[0]);
+    const double mean0 = meanRadiance(env.specular[0]);
     float lastPeak = 1e9f;
     for (std::size_t level = 0; level < env.specular.size(); ++level) {
         const float peak = sampleEquirect(env.specular[level], sun).x;
         QVERIFY2(peak < lastPeak, qPrintable(QString("level %1: sun %2").arg(level).arg(peak)));
         lastPeak = peak;
         if (level > 0) {
-            const double m = mean(env.specular[level]);
+            const double m = meanRadiance(env.specular[level]);
             QVERIFY2(
                 std::abs(m / mean0 - 1.0) < 0.05,
                 qPrintable(QString("level %1: mean %2 against %3").arg(level).arg(m).arg(mean0)));
@@ -210,6 +332,43 @@ void EnvironmentTest::loadsEquirectangularFiles() {
     // RGBE keeps 8 bits of mantissa.
     QVERIFY(glm::length(texel(*hdr, 40, 7) - texel(map, 40, 7)) <
             0.01f * glm::length(texel(map, 40, 7)));
+}
+
+// A map over 2048 wide comes down to 2048 x 1024 whatever its width (halving twice took 4100 to
+// 1025 x 512), with its light.
+void EnvironmentTest::largeFilesShrinkToTwoToOne() {
+    Image map(2050, 1025, 3);
+    for (int y = 0; y < map.height; ++y)
+        for (int x = 0; x < map.width; ++x)
+            for (int c = 0; c < 3; ++c)
+                map.at(x, y, c) = (x / 7 + y / 5) % 3 == 0 ? 4.0f : 0.5f;
+    ImageWriteOptions half;
+    half.format = PixelFormat::Half;
+    QVERIFY(writeImage(path("wide.exr"), map, half).ok());
+    Result<Image> loaded = loadEnvironment(path("wide.exr"));
+    QVERIFY(loaded.ok());
+    QCOMPARE(loaded->width, 2048);
+    QCOMPARE(loaded->height, 1024);
+    QVERIFY(std::abs(meanRadiance(*loaded) / meanRadiance(map) - 1.0) < 0.01);
+}
+
+// Grey and alpha: the light is grey; alpha is not a colour (it once became green and blue).
+void EnvironmentTest::greyWithAlphaIsGrey() {
+    Image greyAlpha(64, 32, 2);
+    for (int y = 0; y < 32; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            greyAlpha.at(x, y, 0) = 0.25f + 0.01f * x;
+            greyAlpha.at(x, y, 1) = 1.0f;
+        }
+    }
+    ImageWriteOptions exr;
+    exr.format = PixelFormat::Float;
+    QVERIFY(writeImage(path("grey-alpha.exr"), greyAlpha, exr).ok());
+    Result<Image> loaded = loadEnvironment(path("grey-alpha.exr"));
+    QVERIFY(loaded.ok());
+    QCOMPARE(loaded->channels, 3);
+    for (int x : {0, 17, 63})
+        QVERIFY(glm::length(texel(*loaded, x, 9) - glm::vec3(0.25f + 0.01f * x)) < 1e-6f);
 }
 
 void EnvironmentTest::badFilesAreClearErrors() {

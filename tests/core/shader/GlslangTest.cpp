@@ -2,6 +2,7 @@
 // Khronos reference front end: the shaders are GLSL 4.30 core as the specification reads it, not
 // only as Mesa accepts it.
 
+#include "TestSupport.h"
 #include "parallax/shader/ShaderGenerator.h"
 
 #include <QProcess>
@@ -58,16 +59,11 @@ void GlslangTest::everyVariantValidates() {
         batch.clear();
         return v.failure;
     };
-    // PX_TEST_SHARD=i/n takes every n-th variant from the i-th: ctest runs the shards in parallel.
-    int shard = 0, shards = 1;
-    if (const QByteArray s = qgetenv("PX_TEST_SHARD"); !s.isEmpty()) {
-        shard = s.split('/').value(0).toInt();
-        shards = std::max(1, s.split('/').value(1).toInt());
-    }
-    QVERIFY(shard >= 0 && shard < shards);
+    // ctest runs the shards in parallel (TestSupport.h).
+    const test::TestShard shard = test::testShard();
     const std::vector<VariantKey> all = allVariants();
     std::set<std::string> vertexStages; // shared by many variants: each validated once
-    for (std::size_t i = shard; i < all.size(); i += shards) {
+    for (std::size_t i = shard.index; i < all.size(); i += shard.count) {
         const VariantKey& k = all[i];
         Result<GeneratedProgram> p = generateProgram(k);
         QVERIFY2(p.ok(), k.name().c_str());
@@ -89,7 +85,8 @@ void GlslangTest::everyVariantValidates() {
     QVERIFY2(failure.isEmpty(), qPrintable(failure.left(4000)));
     // Every variant of the shard's fragment stage and each distinct vertex stage reached the
     // validator and was checked by it.
-    const int variants = static_cast<int>((all.size() - shard + shards - 1) / shards);
+    const int variants =
+        static_cast<int>((all.size() - shard.index + shard.count - 1) / shard.count);
     QVERIFY(variants > 0);
     QCOMPARE(written, variants + static_cast<int>(vertexStages.size()));
     QCOMPARE(validated, written);

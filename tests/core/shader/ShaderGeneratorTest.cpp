@@ -3,6 +3,8 @@
 
 #include "parallax/shader/ShaderGenerator.h"
 
+#include "TestSupport.h"
+
 #include <QtTest>
 #include <cctype>
 #include <fstream>
@@ -15,7 +17,8 @@ using namespace px;
 
 namespace {
 
-// The generated code without comments, so words in comments do not count as code.
+// The generated code without comments (line and block), so words in comments do not count as
+// code.
 std::string code(const std::string& text) {
     std::string out;
     out.reserve(text.size());
@@ -23,6 +26,10 @@ std::string code(const std::string& text) {
         if (text.compare(i, 2, "//") == 0) {
             while (i < text.size() && text[i] != '\n')
                 ++i;
+        } else if (text.compare(i, 2, "/*") == 0) {
+            const std::size_t end = text.find("*/", i + 2);
+            i = end == std::string::npos ? text.size() : end + 2;
+            out += ' ';
         }
         if (i < text.size())
             out += text[i];
@@ -46,6 +53,19 @@ int countWord(const std::string& text, const std::string& word) {
 
 bool hasWord(const std::string& text, const std::string& word) {
     return countWord(text, word) > 0;
+}
+
+// `code` (comments stripped) without its uniform declarations: what is left reads the uniforms.
+std::string withoutDeclarations(std::string code) {
+    for (std::size_t at = code.find("uniform"); at != std::string::npos;
+         at = code.find("uniform", at + 1)) {
+        const bool word = (at == 0 || !isWordChar(code[at - 1])) &&
+                          (at + 7 == code.size() || !isWordChar(code[at + 7]));
+        const std::size_t end = code.find(';', at);
+        if (word && end != std::string::npos)
+            code.replace(at, end + 1 - at, " ");
+    }
+    return code;
 }
 
 bool hasLoop(const std::string& text) {
@@ -100,12 +120,17 @@ private slots:
     void vertexStagesAreKeyedByWhatTheyRead();
 
 private:
-    std::vector<GeneratedProgram> m_all; // every variant, generated once
+    test::TestShard m_shard;
+    std::vector<GeneratedProgram> m_all; // every variant of the shard, generated once
 };
 
 void ShaderGeneratorTest::initTestCase() {
-    for (const VariantKey& k : allVariants())
-        m_all.push_back(generate(k));
+    // ctest runs the shards in parallel (TestSupport.h); each check looks at its shard's variants.
+    m_shard = test::testShard();
+    const std::vector<VariantKey> all = allVariants();
+    for (std::size_t i = m_shard.index; i < all.size(); i += m_shard.count)
+        m_all.push_back(generate(all[i]));
+    QVERIFY(!m_all.empty());
 }
 
 void ShaderGeneratorTest::definesOnlyForBitsThatAreOn() {
@@ -182,14 +207,17 @@ void ShaderGeneratorTest::shadowCodeOnlyWithShadow() {
 }
 
 void ShaderGeneratorTest::everyDeclaredUniformIsRead() {
+    // The check itself: a declaration, a comment or a second declaration is no read.
+    const std::string declared = "uniform float pxA; // pxA\n/* pxA */ uniform float pxB, pxA;\n";
+    QVERIFY(!hasWord(withoutDeclarations(code(declared + "void main() { x = pxB; }")), "pxA"));
+    QVERIFY(hasWord(withoutDeclarations(code(declared + "void main() { x = pxA; }")), "pxA"));
     for (const GeneratedProgram& p : m_all) {
         const VariantKey& k = p.key;
         for (const GeneratedShader* s : {&p.vertex, &p.fragment}) {
-            const std::string c = code(s->text);
-            for (const ShaderUniform& u : s->uniforms) {
-                const int uses = countWord(c, u.name);
-                QVERIFY2(uses >= 2, (k.name() + ": " + u.name + " declared, never read").c_str());
-            }
+            const std::string reads = withoutDeclarations(code(s->text));
+            for (const ShaderUniform& u : s->uniforms)
+                QVERIFY2(hasWord(reads, u.name),
+                         (k.name() + ": " + u.name + " declared, never read").c_str());
             // And every px uniform the code names is declared (else it would not compile).
             QVERIFY(s->text.rfind("#version 430 core\n", 0) == 0);
         }
@@ -303,8 +331,9 @@ void ShaderGeneratorTest::productionKernelsSampleInHardware() {
             ++production;
         }
     }
-    QVERIFY(production > 1000);
-    QVERIFY(verify > 1000);
+    // Over 1000 of each in all (a shard holds every count-th variant).
+    QVERIFY(production * m_shard.count > 1000);
+    QVERIFY(verify * m_shard.count > 1000);
     // Every height-reading variant exists in both flavours.
     VariantKey k = keyOf(Technique::Cone);
     k.flavour = KernelFlavour::Verify;
@@ -318,31 +347,44 @@ void ShaderGeneratorTest::productionKernelsSampleInHardware() {
 // same vertex key has the same vertex text, different keys have different texts, and the few
 // distinct stages are what `shader --dump-all` writes once each.
 void ShaderGeneratorTest::vertexStagesAreKeyedByWhatTheyRead() {
+    // The trace pass, and four mesh stages: uv only (the surface output of none/normal), position
+    // and normal (colour without a texture), + uv (maps, polygon frame), + tangent and bitangent
+    // (parallax and normals with the vertex frame; derivative frames read no tangents).
+    const std::set<std::string> expected{"trace", "mesh+vUv", "mesh+vNormal+vPosition",
+                                         "mesh+vNormal+vPosition+vUv",
+                                         "mesh+vBitangent+vNormal+vPosition+vTangent+vUv"};
     std::map<VertexKey, std::string> stages;
-    for (const GeneratedProgram& p : m_all) {
+    auto check = [&](const GeneratedProgram& p) {
         auto [it, added] = stages.emplace(p.vertexKey, p.vertex.text);
         QVERIFY2(added || it->second == p.vertex.text,
                  (p.key.name() + ": vertex stage " + p.vertexKey.name() + " differs").c_str());
+        QVERIFY2(expected.contains(p.vertexKey.name()),
+                 (p.key.name() + ": vertex stage " + p.vertexKey.name()).c_str());
         QVERIFY2(p.vertex.text.find(p.vertexKey.name()) != std::string::npos, p.key.name().c_str());
         // No feature define of the program reaches the vertex stage.
         for (const std::string& d : p.vertex.defines)
             QVERIFY2(d.rfind("PX_FRAGMENT_READS_", 0) == 0, d.c_str());
+    };
+    for (const GeneratedProgram& p : m_all) {
+        check(p);
+        if (QTest::currentTestFailed())
+            return;
     }
-    std::set<std::string> texts;
-    for (const auto& [key, text] : stages)
-        texts.insert(text);
-    QCOMPARE(texts.size(), stages.size());
-    // The trace pass, and four mesh stages: uv only (the surface output of none/normal), position
-    // and normal (colour without a texture), + uv (maps, polygon frame), + tangent and bitangent
-    // (parallax and normals with the vertex frame; derivative frames read no tangents).
     qInfo("%zu distinct vertex stages for %zu programs", stages.size(), m_all.size());
-    QCOMPARE(stages.size(), std::size_t(5));
-    const std::set<std::string> expected{"trace", "mesh+vUv", "mesh+vNormal+vPosition",
-                                         "mesh+vNormal+vPosition+vUv",
-                                         "mesh+vBitangent+vNormal+vPosition+vTangent+vUv"};
-    std::set<std::string> names;
-    for (const auto& [key, text] : stages)
+    // A shard need not hold every stage: the other shards' variants, until each has been seen.
+    const std::vector<VariantKey> all = allVariants();
+    for (std::size_t i = 0; i < all.size() && stages.size() < expected.size(); ++i) {
+        if (!m_shard.takes(i))
+            check(generate(all[i]));
+        if (QTest::currentTestFailed())
+            return;
+    }
+    std::set<std::string> texts, names;
+    for (const auto& [key, text] : stages) {
+        texts.insert(text);
         names.insert(key.name());
+    }
+    QCOMPARE(texts.size(), stages.size());
     QVERIFY(names == expected);
 }
 

@@ -20,12 +20,4 @@ ConeMap bakeConservativeConesBruteForce(const HeightField& field, WrapMode wrap)
 // b (grad h . (q - b) < 0), |q - b| >= c(b) (h(q) - h_b). The fast relaxed baker equals it.
 ConeMap bakeRelaxedConesBruteForce(const HeightField& field, WrapMode wrap);
 
-// Replaces each cone by the minimum over its 3x3 neighbourhood (wrap or clamp), which makes the
-// bilinearly interpolated cone anywhere in a cell no wider than any of its corners' cones.
-// In place, with memory for a few rows only.
-void applyNeighbourhoodMinimum(ConeMap& cones, WrapMode wrap);
-
-// Rounds each stored sqrt(ratio) down to `levels` steps (255 or 65535): never widens a cone.
-void quantiseDown(ConeMap& cones, int levels);
-
 } // namespace px

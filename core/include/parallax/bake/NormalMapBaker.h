@@ -9,10 +9,10 @@
 
 #include "parallax/Result.h"
 #include "parallax/bake/BakeControl.h"
+#include "parallax/bake/NormalGreen.h"
 #include "parallax/heightfield/HeightField.h"
 #include "parallax/heightfield/WrapMode.h"
 #include "parallax/image/Image.h"
-#include "parallax/material/Material.h" // NormalGreen
 
 #include <optional>
 #include <span>

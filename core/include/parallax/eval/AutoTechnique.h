@@ -1,11 +1,11 @@
 #pragma once
 // Resolving a material's technique "auto" (Material::autoQuality) where it is rendered or
 // exported: the recommendation (Recommendation.h) on the material's own height map, scale and
-// wrap, and for Godot and Unity HDRP the layer counts of their own marches (EngineMarch.h).
+// wrap, and for Godot and Unity HDRP the layer counts of their own marches (EngineLayers.h).
 
 #include "parallax/Result.h"
 #include "parallax/bake/ConeMap.h"
-#include "parallax/eval/EngineMarch.h"
+#include "parallax/eval/EngineLayers.h"
 #include "parallax/heightfield/HeightField.h"
 #include "parallax/material/Material.h"
 #include "parallax/material/MaterialAssets.h"

@@ -21,8 +21,4 @@ std::string_view toString(ExportFormat format); // "package", "gltf", "godot", "
 std::optional<ExportFormat> parseExportFormat(std::string_view name);
 std::span<const std::string_view> exportFormatNames();
 
-// The green convention the target reads normal maps in (docs/conventions.md §3); the package reads
-// the one its material names, OpenGL unless asked otherwise.
-NormalGreen targetGreen(ExportFormat format);
-
 } // namespace px

@@ -19,8 +19,13 @@ glm::vec3 sampleEquirect(const Image& map, glm::vec3 direction);
 
 // Reads an equirectangular HDR or EXR (any image the project reads) as RGB radiance. Errors name
 // the file: missing, not an image, NaN/Inf or negative texels, not twice as wide as high.
-// Larger than 2048 x 1024 is box-filtered down to that (the prefilter needs no more).
+// Larger than 2048 x 1024 is resampled down to that (the prefilter needs no more). Grey maps, with
+// or without alpha, give grey light; alpha is ignored.
 Result<Image> loadEnvironment(const std::string& path);
+
+// The map resampled to `width` x width/2 whatever the ratio (an area-weighted tent filter: the
+// light of every texel is kept, none turns negative).
+Image resampledEnvironment(const Image& map, int width);
 
 // The built-in environment, made here (no image file): a blue sky brightening to a hazy
 // horizon, a sun at `sunDirection` (the preview's directional light, so the sun that shadows is

@@ -1,8 +1,10 @@
 #pragma once
 // A material: which maps, how to read them, and how to render them. Materials are data; the
-// shader variant, the bakes and the exports are derived from them (STYLE.md, "variants as data").
-// The JSON form ("format": "parallax-studio-material", "version": 1) lives in MaterialFile.h.
+// shader variant, the bakes and the exports are derived from them (docs/development.md,
+// Architecture, "Variants as data"). The JSON form ("format": "parallax-studio-material",
+// "version": 1) lives in MaterialFile.h.
 
+#include "parallax/bake/NormalGreen.h"
 #include "parallax/heightfield/HeightFieldLoader.h"
 #include "parallax/heightfield/WrapMode.h"
 #include "parallax/trace/Technique.h"
@@ -18,12 +20,6 @@ enum class NormalSource {
     Map,           // the material's normal map
     HeightCentral, // derived from height in the shader: 4-tap central differences
     HeightSobel,   // derived from height in the shader: 3x3 Sobel
-};
-
-// Green channel convention of a normal map (docs/conventions.md §3).
-enum class NormalGreen {
-    OpenGL,  // Y+ (glTF, Godot, Unity, Blender)
-    DirectX, // Y- (Unreal)
 };
 
 enum class LightingModel { BlinnPhong, MetallicRoughness };

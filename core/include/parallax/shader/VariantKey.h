@@ -1,8 +1,8 @@
 #pragma once
-// Which shader a scene needs (STYLE.md, "variants as data"): a handful of feature bits decided by
-// the material and the view options. isValid() rejects impossible combinations; canonical()
-// collapses keys that would generate the same shader (a feature the technique never reads), so
-// a cache keyed by canonical keys compiles each distinct shader once.
+// Which shader a scene needs (docs/development.md, Architecture, "Variants as data"): a handful of
+// feature bits decided by the material and the view options. isValid() rejects impossible
+// combinations; canonical() collapses keys that would generate the same shader (a feature the
+// technique never reads), so a cache keyed by canonical keys compiles each distinct shader once.
 
 #include "parallax/Result.h"
 #include "parallax/heightfield/WrapMode.h"

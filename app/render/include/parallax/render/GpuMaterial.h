@@ -3,8 +3,8 @@
 // are uploaded when it is created; the derived maps a technique reads (cone map, relaxed cone map,
 // max-mip pyramid) only when prepare() is called for that technique, baked from the height map if
 // the material has no file for them. So a `pom` view never bakes a cone map and a `cone` view
-// never builds a pyramid. An editor can bake in the background and hand the result over with
-// setConeMap()/setPyramid() instead (these must run on the GL thread).
+// never builds a pyramid. An editor bakes in the background and makes a new GpuMaterial from the
+// assets with the baked maps, taking the unchanged textures over from the old one (`previous`).
 
 #include "parallax/bake/ConeMap.h"
 #include "parallax/bake/MaxMipPyramid.h"
@@ -44,8 +44,6 @@ public:
     // What prepare() would still have to bake for `technique`.
     bool ready(Technique technique) const;
 
-    void setConeMap(const ConeMap& cones); // its kind says which one
-    void setPyramid(const MaxMipPyramid& pyramid);
     // The wrap mode changes sampler state and invalidates the derived maps (baked per wrap mode).
     void setWrap(WrapMode wrap);
     WrapMode wrap() const { return m_wrap; }
@@ -54,6 +52,9 @@ public:
     bool hasAlbedo() const { return static_cast<bool>(m_albedo); }
     bool hasNormalMap() const { return static_cast<bool>(m_normal); }
     bool hasSurfaceMap() const { return static_cast<bool>(m_orm); }
+    // Which maps the surface texture holds (the others' channels hold 1: SurfaceFactors.h).
+    bool hasRoughnessMap() const { return !m_roughnessMap.empty(); }
+    bool hasMetallicMap() const { return !m_metallicMap.empty(); }
     bool heightIs16Bit() const { return m_height16; }
     // The cone texture of `kind` is RG16 (heights and cones on the 16-bit grid), not RG32F.
     bool coneMapIs16Bit(ConeKind kind) const {

@@ -1,11 +1,10 @@
 // The models of Godot 4's deep parallax (BaseMaterial3D, scene/resources/material.cpp) and Unity
 // HDRP's parallax occlusion (PerPixelDisplacement.hlsl) against the published shaders written out
-// here step by step in double precision, and the layer advice against a fresh measurement.
+// here step by step in double precision.
 
-#include "parallax/eval/EngineMarch.h"
+#include "parallax/engine/EngineMarch.h"
 
 #include "TestSupport.h"
-#include "parallax/eval/HitErrorStats.h"
 #include "parallax/sample/ProceduralMaps.h"
 #include "parallax/trace/TraceScene.h"
 
@@ -22,15 +21,11 @@ class EngineMarchTest : public QObject {
     Q_OBJECT
 
 private slots:
-    void init() { clearRecommendationCache(); }
     void layerCountIsGodotsMix();
     void marchMatchesThePublishedShader();
     void flatMapIsFoundExactly();
-    void adviceMeetsTheBudgetOnFreshRays();
-    void noLayerCountSaysWhatDoes();
     void hdrpStepCountIsItsAngleMix();
     void hdrpMatchesThePublishedShader();
-    void hdrpAdviceMeetsTheBudgetOnFreshRays();
 };
 
 namespace {
@@ -135,35 +130,6 @@ ShaderHit publishedHdrp(const HeightField& field, double u0, double v0, double p
     return {u0 + ou, v0 + ov, fetches};
 }
 
-// p99 of an engine march's hits at every angle the advice judged, on fresh rays of the test's own
-// drawing (2000 per azimuth) against the exact hit of the same ray; `offset` gives the engine's P
-// for (polar, azimuth), `march` traces one ray with it.
-template <class Offset, class March>
-void checkFreshP99(const RecommendConfig& config, unsigned seed, Offset offset, March march) {
-    const HeightField& field = *config.field;
-    TraceMaps maps;
-    maps.height = &field;
-    Result<Tracer> exact =
-        Tracer::create(maps, Technique::Exact, info(Technique::Exact).defaults, config.scale);
-    QVERIFY(exact.ok());
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    for (double polar : recommendationPolars(config.maxPolarDeg)) {
-        std::vector<double> errors;
-        for (double azimuth : config.azimuthDeg) {
-            const glm::vec2 P = offset(polar, azimuth);
-            for (int k = 0; k < 2000; ++k) {
-                const glm::dvec2 uv0(uniform(rng), uniform(rng));
-                errors.push_back(
-                    hitErrorTexels(march(uv0, P, polar), exact->trace(uv0, P), 64, 64));
-            }
-        }
-        const double p99 = nearestRankPercentile(errors, 0.99);
-        QVERIFY2(p99 <= config.budget.texels,
-                 qPrintable(QString("polar %1: p99 %2").arg(polar).arg(p99)));
-    }
-}
-
 // An engine model against its shader written out in double on a 64² map: 5 polar angles x 4
 // azimuths x 2 settings x 50 random rays, every hit within `texelTolerance` and the same fetches.
 // `march(u0, v0, polar, azimuth, setting)` returns (shader hit, model hit).
@@ -238,49 +204,6 @@ void EngineMarchTest::flatMapIsFoundExactly() {
     }
 }
 
-void EngineMarchTest::adviceMeetsTheBudgetOnFreshRays() {
-    RecommendConfig config;
-    config.field =
-        std::make_shared<HeightField>(makeProceduralMap(ProceduralMap::Stones, 64, 64, 5));
-    config.name = "stones";
-    config.maxPolarDeg = 75.0;
-    config.budget.texels = 0.25;
-    Result<EngineLayersAdvice> advice = recommendGodotLayers(config);
-    QVERIFY(advice.ok() && advice->found);
-    QVERIFY(advice->layers.maxLayers >= 4 && advice->layers.minLayers >= 1);
-    QVERIFY(QString::fromStdString(advice->note).startsWith("Godot deep parallax with "));
-
-    // Against the exact hit of Godot's own ray.
-    checkFreshP99(
-        config, 99,
-        [&](double polar, double azimuth) {
-            return godotParallaxVector(config.scale, polar, azimuth);
-        },
-        [&](glm::dvec2 uv0, glm::vec2 P, double polar) {
-            const float cosPolar = static_cast<float>(std::cos(polar * std::numbers::pi / 180.0));
-            return godotDeepParallax(*config.field, WrapMode::Repeat, uv0, P, cosPolar,
-                                     advice->layers);
-        });
-}
-
-void EngineMarchTest::noLayerCountSaysWhatDoes() {
-    RecommendConfig config;
-    config.field =
-        std::make_shared<HeightField>(makeProceduralMap(ProceduralMap::Spikes, 64, 64, 2));
-    config.name = "spikes";
-    config.maxPolarDeg = 85.0;
-    config.budget = {0.001, BudgetMetric::Max};
-    Result<EngineLayersAdvice> advice = recommendGodotLayers(config, "cone (steps 64)");
-    QVERIFY(advice.ok());
-    QVERIFY(!advice->found);
-    QCOMPARE(advice->tried.maxLayers, 128);
-    const QString note = QString::fromStdString(advice->note);
-    QVERIFY2(note.startsWith("Godot's deep parallax does not meet max <= 0.001 texel up to 85 "
-                             "degrees with up to 32-128 layers: at 85 degrees"),
-             qPrintable(note));
-    QVERIFY(note.endsWith("; cone (steps 64) does"));
-}
-
 void EngineMarchTest::hdrpStepCountIsItsAngleMix() {
     // Straight down: the minimum; the uv-space angle is atan(s tan(polar)), not the polar angle.
     QCOMPARE(hdrpStepCount({5, 15}, {0.0f, 0.0f}), 5);
@@ -302,28 +225,6 @@ void EngineMarchTest::hdrpMatchesThePublishedShader() {
             return std::pair(publishedHdrp(field, u0, v0, polar, azimuth, 0.05, steps.minLayers,
                                            steps.maxLayers),
                              hdrpParallaxOcclusion(field, WrapMode::Repeat, {u0, v0}, P, steps));
-        });
-}
-
-void EngineMarchTest::hdrpAdviceMeetsTheBudgetOnFreshRays() {
-    RecommendConfig config;
-    config.field =
-        std::make_shared<HeightField>(makeProceduralMap(ProceduralMap::Stones, 64, 64, 6));
-    config.name = "stones";
-    config.maxPolarDeg = 75.0;
-    config.budget.texels = 0.25;
-    Result<EngineLayersAdvice> advice = recommendEngineLayers(EngineMarch::Hdrp, config);
-    QVERIFY(advice.ok() && advice->found);
-    QCOMPARE(advice->engine, EngineMarch::Hdrp);
-    QVERIFY(advice->layers.minLayers >= 1 && advice->layers.maxLayers >= 4);
-    QVERIFY2(QString::fromStdString(advice->note).startsWith("HDRP parallax occlusion with "),
-             advice->note.c_str());
-    // Against the exact hit of the relief's own ray.
-    checkFreshP99(
-        config, 1234,
-        [&](double polar, double azimuth) { return parallaxVector(config.scale, polar, azimuth); },
-        [&](glm::dvec2 uv0, glm::vec2 P, double) {
-            return hdrpParallaxOcclusion(*config.field, WrapMode::Repeat, uv0, P, advice->layers);
         });
 }
 

@@ -1,4 +1,4 @@
-#include "jobs/SkyFollower.h"
+#include "preview/SkyFollower.h"
 
 #include "parallax/light/Environment.h"
 #include "preview/ViewportGrid.h"

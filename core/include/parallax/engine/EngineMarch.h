@@ -1,7 +1,8 @@
 #pragma once
 // The engines' own parallax marches, modelled so their layer counts can be measured and chosen
 // like any technique's quality. An engine export cannot ship this project's kernels into the
-// engine's standard material; it ships layer counts, and these models say which ones suffice.
+// engine's standard material; it ships layer counts, and these models say which ones suffice
+// (parallax/eval/EngineLayers.h measures them).
 //
 // Godot 4 (BaseMaterial3D with heightmap_deep_parallax, scene/resources/material.cpp):
 //   num_layers = mix(max_layers, min_layers, |view.z|)        a float, not rounded
@@ -24,16 +25,11 @@
 // Unreal's ParallaxOcclusionMapping material function has no published formula (its HLSL lives
 // in a binary asset): its steps are not modelled, and an Unreal export says so.
 
-#include "parallax/Result.h"
-#include "parallax/eval/EvalControl.h"
-#include "parallax/eval/Recommendation.h"
 #include "parallax/heightfield/HeightField.h"
 #include "parallax/heightfield/WrapMode.h"
 #include "parallax/trace/Tracer.h"
 
 #include <glm/vec2.hpp>
-#include <string>
-#include <vector>
 
 namespace px {
 
@@ -63,27 +59,9 @@ TraceResult hdrpParallaxOcclusion(const HeightField& field, WrapMode wrap, glm::
 
 enum class EngineMarch { Godot, Hdrp };
 
-struct EngineLayersAdvice {
-    EngineMarch engine = EngineMarch::Godot;
-    bool found = false;
-    EngineLayers layers;              // found: the smallest that meet the budget
-    std::vector<AngleMeasure> angles; // of those layers, or of the most the ladder tried
-    EngineLayers tried;               // not found: the most layers measured
-    std::string note;                 // one sentence for the export's notes
-};
-
-// The smallest min/max layers of an engine's march that meet config's budget at every angle up
-// to config.maxPolarDeg, measured as recommend() measures (the same rays, cache and confidence).
-// The ladder keeps the engine's default ratio: Godot's 8-32 (max = 4 min), HDRP's 5-15 (max = 3
-// min). `fallback` names what does meet the budget when no layer count does (may be empty).
-Result<EngineLayersAdvice> recommendEngineLayers(EngineMarch engine, const RecommendConfig& config,
-                                                 const std::string& fallback = {},
-                                                 const EvalControl& control = {});
-
-inline Result<EngineLayersAdvice> recommendGodotLayers(const RecommendConfig& config,
-                                                       const std::string& fallback = {},
-                                                       const EvalControl& control = {}) {
-    return recommendEngineLayers(EngineMarch::Godot, config, fallback, control);
-}
+// The most layers (Godot) or steps (HDRP) the engine's material takes: 64 for both. Godot's
+// inspector stops heightmap_min_layers and heightmap_max_layers at 64 (material.cpp, range
+// "1,64,1"); HDRP Lit clamps _PPDMinSamples and _PPDMaxSamples to Range(1, 64).
+inline constexpr int kEngineMaxLayers = 64;
 
 } // namespace px

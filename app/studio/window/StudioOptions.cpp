@@ -1,4 +1,4 @@
-#include "StudioOptions.h"
+#include "window/StudioOptions.h"
 
 #include <QObject>
 #include <QSize>
