@@ -2,6 +2,7 @@
 // as the editor decides (parallax/material/TextureSetImport.h), with the same summary.
 
 #include "Cli.h"
+#include "parallax/io/Inputs.h"
 #include "parallax/material/MapPaths.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/TextureSetImport.h"
@@ -42,6 +43,10 @@ int runImport(const ImportOptions& o) {
     Result<std::vector<std::string>> files = inputFiles(o);
     if (!files)
         return fail(files.error().message);
+    for (const std::string& file : *files) { // read or not, none may be written over
+        if (Status s = noteInput(file, "a file of the texture set"); !s)
+            return fail(s.error().message);
+    }
     const std::string source = o.inputs.size() == 1 ? o.inputs.front() : "the files";
     Result<TextureSetPlan> plan = planTextureSet(*files, source, o.set);
     if (!plan) {

@@ -4,6 +4,7 @@
 #include "ImageBudget.h"
 #include "PngCheck.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/Inputs.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -69,12 +70,12 @@ Status checkFinite(const std::string& path, const Image& image) {
 } // namespace
 
 Result<Image> readImage(const std::string& path, const ImageReadOptions& options) {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec))
-        return fileError(path, "no such file");
-    if (std::filesystem::is_directory(path, ec))
-        return fileError(path, "is a folder, not an image file");
-    if (std::filesystem::file_size(path, ec) == 0 && !ec)
+    // Opened first without blocking: a FIFO or a device is refused by name, never waited on, and
+    // the file is recorded as an input of the run (Inputs.h) before anything reads it.
+    Result<InputFile> file = InputFile::open(path);
+    if (!file)
+        return file.error();
+    if (file->size() == 0)
         return fileError(path, "the file is empty (0 bytes)");
     // Before OpenEXR, which allocates what a damaged header claims (fuzzing found 1.7 GB).
     if (Status exr = checkExrHeader(path); !exr)
@@ -111,7 +112,7 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
                      bitsPerTexel,
                      input->format_name(),
                      spec.get_string_attribute("compression"),
-                     static_cast<std::int64_t>(std::filesystem::file_size(path, ec))};
+                     static_cast<std::int64_t>(file->size())};
     if (Status fits = checkImageClaim(path, claim); !fits)
         return fits.error();
     if (Status data = checkPngData(path); !data)
