@@ -189,7 +189,7 @@ Result<Material> materialFrom(const RenderOptions& o, MaterialAssets& assets) {
         return field.error();
     assets.height = std::move(*field);
     if (!o.albedo.empty()) {
-        Result<Image> albedo = readImage(o.albedo);
+        Result<Image> albedo = readImage(o.albedo, colourMapReading());
         if (!albedo)
             return albedo.error();
         assets.albedo = std::move(*albedo);

@@ -130,6 +130,7 @@ void FaultReachTest::initTestCase() {
     QVERIFY(QFile::copy(m_dir + "/h.png", m_dir + "/set/stone_height.png"));
     QVERIFY(QFile::copy(m_dir + "/a.png", m_dir + "/set/stone_albedo.png"));
     write(m_dir + "/set/notes.txt", "the artist's notes\n");
+    QVERIFY(QFile::copy(m_dir + "/a.png", m_dir + "/set/stone_preview.jpg")); // not a map
     // Meshes: a triangle with its buffer, its image, a material library and its texture.
     write(m_dir + "/meshes/tri.bin", triangleBuffer());
     write(m_dir + "/meshes/tri.gltf",
@@ -183,10 +184,10 @@ void FaultReachTest::inputReachedAnotherWay_data() {
         << "t-001.png" << "frame 1 of --turntable[^\\n]*the albedo map of t.json";
     QTest::newRow("import --force: an image of the set")
         << QStringList{"import", "set", "--out", "set/stone_albedo.png", "--force"}
-        << "stone_albedo.png" << "a file of the texture set[^\\n]*" + reads;
-    QTest::newRow("import --force: another file of the folder")
-        << QStringList{"import", "set", "--out", "set/notes.txt", "--force"} << "notes.txt"
-        << reads;
+        << "stone_albedo.png" << "an image of the texture set[^\\n]*" + reads;
+    QTest::newRow("import --force: an image the set ignores")
+        << QStringList{"import", "set", "--out", "set/stone_preview.jpg", "--force"}
+        << "stone_preview.jpg" << "an image of the texture set[^\\n]*" + reads;
     QTest::newRow("render: a mesh's buffer")
         << QStringList{"render", "--height", "h.png", "--mesh", "meshes/tri.gltf", "--size", "16",
                        "--out", "meshes/tri.bin"}

@@ -50,10 +50,10 @@ Status noInputAmong(const fs::path& target, const std::vector<std::string>& list
             continue;
         if (const std::optional<InputEntry> input = inputWithIdentity(*id))
             return fileError(where(target),
-                             "holds " + name + ", a file of the earlier export that this run "
-                                               "reads (" +
+                             "holds " + name +
+                                 ", a file of the earlier export that this run reads as " +
                                  describeInput(*input) +
-                                 "): updating the export would replace or remove it; export to "
+                                 ": updating the export would replace or remove it; export to "
                                  "another folder");
     }
     return success();

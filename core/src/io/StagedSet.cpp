@@ -42,9 +42,19 @@ struct Journal {
     std::vector<Removal> removals;
 };
 
+// The folder a stage lies in, absolute (a stage may be named relative to the working folder).
+fs::path stageParent(const fs::path& stage) {
+    std::error_code ec;
+    return fs::absolute(stage, ec).lexically_normal().parent_path();
+}
+
 std::string journalText(const fs::path& stage, const Journal& j) {
+    std::error_code ec;
+    // Relative to the stage's folder, so that a folder moved as a whole still recovers.
+    const fs::path into =
+        fs::absolute(j.into, ec).lexically_normal().lexically_relative(stageParent(stage));
     std::string text = std::string(kJournalHeader) + "\n";
-    text += "into " + j.into.lexically_relative(stage.parent_path()).string() + "\n";
+    text += "into " + (into.empty() ? std::string(".") : into.string()) + "\n";
     for (const std::string& name : j.moves)
         text += "move " + name + "\n";
     for (const Journal::Removal& r : j.removals)
@@ -70,7 +80,7 @@ std::optional<Journal> readJournal(const fs::path& stage) {
         const std::string word = line.substr(0, space);
         const std::string rest = space == std::string::npos ? "" : line.substr(space + 1);
         if (word == "into") {
-            j.into = (stage.parent_path() / rest).lexically_normal();
+            j.into = (stageParent(stage) / rest).lexically_normal();
         } else if (word == "move" && bareName(rest)) {
             j.moves.push_back(rest);
         } else if (word == "remove") {
