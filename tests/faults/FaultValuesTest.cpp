@@ -121,8 +121,8 @@ void FaultValuesTest::relativeXdgCacheHomeIgnored() {
     QVERIFY(QFile::copy(m_dir + "/h.png", m_dir + "/run/h.png"));
     const auto before = snapshot(m_dir + "/run");
     const CliRun run = runCli(m_dir + "/run",
-                              {"recommend", "--height", "h.png", "--max-polar", "60", "--rays",
-                               "8", "--techniques", "cone"},
+                              {"recommend", "--height", "h.png", "--max-polar", "60", "--techniques",
+                               "cone"},
                               {"XDG_CACHE_HOME=relative-cache", "HOME=" + home});
     QVERIFY2(run.status == 0, qPrintable(run.output));
     QCOMPARE(difference(before, snapshot(m_dir + "/run")), QString());

@@ -187,6 +187,8 @@ Result<LoadedMesh> loadMesh(const std::string& path, const MeshLoadOptions& opti
     }
     if (cancelled)
         return Error{path + ": loading cancelled", ErrorKind::Cancelled, path};
+    if (!io->refusal().empty()) // Assimp may carry on without a file it was refused
+        return fileError(path, "cannot read it as a mesh: " + io->refusal());
     if (scene == nullptr) {
         std::string why = importer.GetErrorString();
         if (!io->refusal().empty())

@@ -129,6 +129,9 @@ Assimp::IOStream* ScopedIoSystem::Open(const char* file, const char* mode) {
         m_refusal = std::string(file) + " lies outside the mesh's folder";
         return nullptr;
     }
+    std::error_code ec;
+    if (!fs::exists(file, ec))
+        return nullptr; // Assimp probes for optional files
     Result<InputFile> opened = m_scope.open(file, "a file it refers to");
     if (!opened) {
         m_refusal = opened.error().message;

@@ -42,7 +42,8 @@ private:
 std::string percentDecoded(const std::string& uri);
 
 // The IOSystem Assimp opens every file through: only files under the scope's root, regular,
-// recorded; a refusal is kept for the error message.
+// recorded. A refusal (outside the root, a special file, an output of the run) is kept and fails
+// the load even where Assimp would carry on without the file; a missing file is Assimp's to judge.
 class ScopedIoSystem : public Assimp::IOSystem {
 public:
     explicit ScopedIoSystem(const MeshScope& scope) : m_scope(scope) {}

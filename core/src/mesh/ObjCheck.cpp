@@ -82,9 +82,12 @@ bool textureStatement(const std::string& keyword) {
 // A material library: its textures are the mesh's files too (not read by the preview, but no
 // output of the run may replace them).
 Status checkLibrary(const std::filesystem::path& path, const MeshScope& scope) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        return success(); // Assimp carries on without it, and so does the preview
     Result<InputFile> file = scope.open(path, "material library " + path.filename().string());
     if (!file)
-        return success(); // Assimp carries on without it, and so does the preview
+        return file.error(); // a FIFO, or an output of the run
     return eachLine(*file, [&](const std::string& keyword, const std::string& argument,
                                std::uint64_t) -> Status {
         if (!textureStatement(keyword))
