@@ -15,9 +15,9 @@ extern "C" void onInterrupt(int signal) {
         return;
     px::removeTemporariesNow();
     const char* message =
-        signal == SIGTERM   ? "\nerror: terminated (SIGTERM): stopped, temporary files removed\n"
-        : signal == SIGHUP  ? "\nerror: hung up (SIGHUP): stopped, temporary files removed\n"
-                            : "\nerror: interrupted (SIGINT): stopped, temporary files removed\n";
+        signal == SIGTERM  ? "\nerror: terminated (SIGTERM): stopped, temporary files removed\n"
+        : signal == SIGHUP ? "\nerror: hung up (SIGHUP): stopped, temporary files removed\n"
+                           : "\nerror: interrupted (SIGINT): stopped, temporary files removed\n";
     // write() and _exit() are async-signal-safe; stdio and exit() are not.
     [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, message, std::strlen(message));
     ::_exit(kInterruptedStatus);

@@ -279,8 +279,7 @@ int runRender(const RenderOptions& o) {
     const std::vector<std::string> frames =
         o.turntable > 0 ? numberedFiles(o.out, o.turntable) : std::vector<std::string>{};
     for (std::size_t i = 0; i < frames.size(); ++i) {
-        if (Status s = planOutput(frames[i], "frame " + std::to_string(i) + " of --turntable");
-            !s)
+        if (Status s = planOutput(frames[i], "frame " + std::to_string(i) + " of --turntable"); !s)
             return fail(s.error().message);
     }
     MaterialAssets assets;

@@ -70,8 +70,8 @@ QByteArray triangleGlb(quint32 jsonLength) {
         json.append(' ');
     const QByteArray bin = triangleBuffer();
     QByteArray glb = "glTF" + little32(2) + little32(20 + json.size() + 8 + bin.size());
-    glb += little32(jsonLength) + "JSON" + json + little32(bin.size()) + QByteArray("BIN\0", 4) +
-           bin;
+    glb +=
+        little32(jsonLength) + "JSON" + json + little32(bin.size()) + QByteArray("BIN\0", 4) + bin;
     return glb;
 }
 
@@ -155,59 +155,74 @@ void FaultReachTest::inputReachedAnotherWay_data() {
     const QString reads = "which this run reads: refusing to overwrite an input";
     QTest::newRow("render: the material's height map")
         << QStringList{"render", "--material", "m.json", "--size", "16", "--out", "h.png"}
-        << "h.png" << "the height map of m.json[^\\n]*" + reads;
+        << "h.png"
+        << "the height map of m.json[^\\n]*" + reads;
     QTest::newRow("render: its height map spelt ./sub/../")
         << QStringList{"render", "--material", "m.json", "--size", "16", "--out", "./sub/../h.png"}
-        << "h.png" << "the height map of m.json[^\\n]*" + reads;
+        << "h.png"
+        << "the height map of m.json[^\\n]*" + reads;
     QTest::newRow("render: a hard link to its height map")
         << QStringList{"render", "--material", "m.json", "--size", "16", "--out", "hard.png"}
         << "hard.png" << reads;
     QTest::newRow("render: a map it names but does not load")
         << QStringList{"render", "--material", "m.json", "--size", "16", "--out", "c.png"}
-        << "c.png" << "the cone map of m.json[^\\n]*" + reads;
+        << "c.png"
+        << "the cone map of m.json[^\\n]*" + reads;
     QTest::newRow("render: a material in another folder")
         << QStringList{"render", "--material", "sub/m2.json", "--size", "16", "--out", "h.png"}
-        << "h.png" << "the height map of sub/m2.json[^\\n]*" + reads;
+        << "h.png"
+        << "the height map of sub/m2.json[^\\n]*" + reads;
     QTest::newRow("recommend --out: the albedo")
         << QStringList{"recommend", "--material", "m.json", "--cache", "off", "--out", "a.png"}
-        << "a.png" << "the albedo map of m.json[^\\n]*" + reads;
+        << "a.png"
+        << "the albedo map of m.json[^\\n]*" + reads;
     QTest::newRow("shader --out: the albedo")
         << QStringList{"shader", "--material", "m.json", "--out", "a.png"} << "a.png"
         << "the albedo map of m.json[^\\n]*" + reads;
     QTest::newRow("turntable frames: --height and --albedo")
-        << QStringList{"render", "--height", "t-000.png", "--albedo", "t-001.png",
-                       "--turntable", "2", "--size", "16", "--out", "t.png"}
-        << "t-000.png" << "frame 0 of --turntable names the same file as --height t-000.png";
+        << QStringList{"render", "--height", "t-000.png", "--albedo", "t-001.png", "--turntable",
+                       "2",      "--size",   "16",        "--out",    "t.png"}
+        << "t-000.png"
+        << "frame 0 of --turntable names the same file as --height t-000.png";
     QTest::newRow("turntable frames: a map of the material")
-        << QStringList{"render", "--material", "t.json", "--turntable", "2", "--size", "16",
-                       "--out", "t.png"}
-        << "t-001.png" << "frame 1 of --turntable[^\\n]*the albedo map of t.json";
+        << QStringList{"render", "--material", "t.json", "--turntable", "2",
+                       "--size", "16",         "--out",  "t.png"}
+        << "t-001.png"
+        << "frame 1 of --turntable[^\\n]*the albedo map of t.json";
     QTest::newRow("import --force: an image of the set")
         << QStringList{"import", "set", "--out", "set/stone_albedo.png", "--force"}
-        << "stone_albedo.png" << "an image of the texture set[^\\n]*" + reads;
+        << "stone_albedo.png"
+        << "an image of the texture set[^\\n]*" + reads;
     QTest::newRow("import --force: an image the set ignores")
         << QStringList{"import", "set", "--out", "set/stone_preview.jpg", "--force"}
-        << "stone_preview.jpg" << "an image of the texture set[^\\n]*" + reads;
+        << "stone_preview.jpg"
+        << "an image of the texture set[^\\n]*" + reads;
     QTest::newRow("render: a mesh's buffer")
-        << QStringList{"render", "--height", "h.png", "--mesh", "meshes/tri.gltf", "--size", "16",
-                       "--out", "meshes/tri.bin"}
-        << "tri.bin" << "buffer 0 of mesh meshes/tri.gltf[^\\n]*" + reads;
+        << QStringList{"render", "--height", "h.png", "--mesh",        "meshes/tri.gltf",
+                       "--size", "16",       "--out", "meshes/tri.bin"}
+        << "tri.bin"
+        << "buffer 0 of mesh meshes/tri.gltf[^\\n]*" + reads;
     QTest::newRow("render: a mesh's image")
-        << QStringList{"render", "--height", "h.png", "--mesh", "meshes/tri.gltf", "--size", "16",
-                       "--out", "meshes/tri_albedo.png"}
-        << "tri_albedo.png" << "image 0 of mesh meshes/tri.gltf[^\\n]*" + reads;
+        << QStringList{"render", "--height",        "h.png",
+                       "--mesh", "meshes/tri.gltf", "--size",
+                       "16",     "--out",           "meshes/tri_albedo.png"}
+        << "tri_albedo.png"
+        << "image 0 of mesh meshes/tri.gltf[^\\n]*" + reads;
     QTest::newRow("render: an OBJ's material library texture")
-        << QStringList{"render", "--height", "h.png", "--mesh", "meshes/tri.obj", "--size", "16",
-                       "--out", "meshes/tri_albedo.png"}
-        << "tri_albedo.png" << "a texture of mesh meshes/tri.obj[^\\n]*" + reads;
+        << QStringList{"render", "--height",       "h.png",
+                       "--mesh", "meshes/tri.obj", "--size",
+                       "16",     "--out",          "meshes/tri_albedo.png"}
+        << "tri_albedo.png"
+        << "a texture of mesh meshes/tri.obj[^\\n]*" + reads;
     QTest::newRow("render: an OBJ's material library")
-        << QStringList{"render", "--height", "h.png", "--mesh", "meshes/tri.obj", "--size", "16",
-                       "--out", "meshes/tri.mtl"}
+        << QStringList{"render", "--height", "h.png", "--mesh",        "meshes/tri.obj",
+                       "--size", "16",       "--out", "meshes/tri.mtl"}
         << "tri.mtl" << reads;
     QTest::newRow("export --force into the inputs' own folder")
-        << QStringList{"export", "--height", "h.png", "--format", "package", "--out", ".",
-                       "--force"}
-        << ".:" << "holds files that no export wrote; refusing to replace it";
+        << QStringList{"export",  "--height", "h.png", "--format",
+                       "package", "--out",    ".",     "--force"}
+        << ".:"
+        << "holds files that no export wrote; refusing to replace it";
 }
 
 void FaultReachTest::inputReachedAnotherWay() {
@@ -249,13 +264,19 @@ void FaultReachTest::specialFileAsOutput_data() {
         }
     }
     QTest::newRow("turntable frame 1 a FIFO")
-        << "frames" << QStringList{"render", "--height", "h.png", "--turntable", "2", "--size", "16",
-                                   "--out", "spin.png"}
+        << "frames" << QStringList{"render", "--height", "h.png", "--turntable", "2",
+                                   "--size", "16",       "--out", "spin.png"}
         << "spin-001.png" << fifo;
     QTest::newRow("export into a FIFO")
-        << "fifo" << QStringList{"export", "--height", "h.png", "--format", "gltf", "--out",
-                                 "special-fifo.png"}
-        << "special-fifo.png" << "exists and is not a folder";
+        << "fifo" << QStringList{"export", "--height", "h.png",           "--format",
+                                 "gltf",   "--out",    "special-fifo.png"}
+        << "special-fifo.png"
+        << "exists and is not a folder";
+    QTest::newRow("export into a link to a folder")
+        << "dirlink"
+        << QStringList{"export", "--height", "h.png", "--format", "gltf", "--out", "linked-dir"}
+        << "linked-dir"
+        << "is a symbolic link \\(to sub\\); an export replaces whole folders";
 }
 
 void FaultReachTest::specialFileAsOutput() {
@@ -280,6 +301,8 @@ void FaultReachTest::specialFileAsOutput() {
         std::memcpy(address.sun_path, name.constData(), static_cast<std::size_t>(name.size()));
         QVERIFY(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0);
         ::close(fd);
+    } else if (kind == "dirlink") {
+        QVERIFY(QFile::link("sub", path));
     } else if (kind == "frames") {
         QVERIFY(QFile::copy(m_dir + "/h.png", m_dir + "/spin-000.png"));
         QVERIFY(::mkfifo(path.toLocal8Bit().constData(), 0644) == 0);
@@ -332,30 +355,30 @@ void FaultReachTest::specialFileAsInput_data() {
     QTest::newRow("--material") << QStringList{"render", "--material", "pipe.json", "--out",
                                                "r.png"}
                                 << "pipe.json";
-    QTest::newRow("a material's map") << QStringList{"render", "--material", "piped.json",
-                                                     "--size", "16", "--out", "r.png"}
-                                      << "pipe.png";
+    QTest::newRow("a material's map")
+        << QStringList{"render", "--material", "piped.json", "--size", "16", "--out", "r.png"}
+        << "pipe.png";
     QTest::newRow("--mesh") << QStringList{"render", "--height", "h.png", "--mesh", "pipe.obj",
-                                           "--size", "16", "--out", "r.png"}
+                                           "--size", "16",       "--out", "r.png"}
                             << "pipe.obj";
-    QTest::newRow("--environment") << QStringList{"render", "--height", "h.png", "--environment",
-                                                  "pipe.hdr", "--size", "16", "--out", "r.png"}
-                                   << "pipe.hdr";
-    QTest::newRow("a mesh's buffer") << QStringList{"render", "--height", "h.png", "--mesh",
-                                                    "meshes/piped.gltf", "--size", "16", "--out",
-                                                    "r.png"}
-                                     << "pipe.bin";
-    QTest::newRow("bench --from-csv") << QStringList{"bench", "--from-csv", "pipe.csv", "--plot",
-                                                     "p.svg"}
-                                      << "pipe.csv";
+    QTest::newRow("--environment")
+        << QStringList{"render", "--height", "h.png", "--environment", "pipe.hdr",
+                       "--size", "16",       "--out", "r.png"}
+        << "pipe.hdr";
+    QTest::newRow("a mesh's buffer")
+        << QStringList{"render", "--height", "h.png", "--mesh", "meshes/piped.gltf",
+                       "--size", "16",       "--out", "r.png"}
+        << "pipe.bin";
+    QTest::newRow("bench --from-csv")
+        << QStringList{"bench", "--from-csv", "pipe.csv", "--plot", "p.svg"} << "pipe.csv";
 }
 
 // A FIFO (or any special file) to read is refused by name at once: never waited on.
 void FaultReachTest::specialFileAsInput() {
     QFETCH(QStringList, args);
     QFETCH(QString, file);
-    for (const char* name : {"pipe.png", "pipe.json", "pipe.obj", "pipe.hdr", "pipe.csv",
-                             "meshes/pipe.bin"})
+    for (const char* name :
+         {"pipe.png", "pipe.json", "pipe.obj", "pipe.hdr", "pipe.csv", "meshes/pipe.bin"})
         QVERIFY(::mkfifo(QString(m_dir + "/" + name).toLocal8Bit().constData(), 0644) == 0);
     write(m_dir + "/piped.json", R"({"format": "parallax-studio-material", "version": 1,
  "maps": {"height": "pipe.png"}})");
@@ -373,8 +396,8 @@ void FaultReachTest::fifoInTheConeCacheDoesNotHang() {
     const QString cache = m_temp.path() + "/cache";
     QDir(cache).removeRecursively();
     QDir().mkpath(cache);
-    const QStringList args = {"recommend", "--height", "h.png", "--cache", cache, "--max-polar",
-                              "60"};
+    const QStringList args = {"recommend", "--height",    "h.png", "--cache",
+                              cache,       "--max-polar", "60"};
     QCOMPARE(runCli(m_dir, args).status, 0);
     const QStringList baked = QDir(cache).entryList({"cone-*.pxcone"});
     QVERIFY2(!baked.isEmpty(), qPrintable(QDir(cache).entryList().join(' ')));
@@ -396,8 +419,8 @@ void FaultReachTest::meshReferencesStayInside_data() {
     const QString outside = "refers to [^\\n]*, outside the folder";
     QTest::newRow("buffer ../../../../etc/passwd")
         << QString(triangleGltf("../../../../etc/passwd")) << "buffer 0 " + outside;
-    QTest::newRow("buffer /etc/passwd") << QString(triangleGltf("/etc/passwd"))
-                                        << "buffer 0 " + outside;
+    QTest::newRow("buffer /etc/passwd")
+        << QString(triangleGltf("/etc/passwd")) << "buffer 0 " + outside;
     QTest::newRow("buffer ../secret.txt, percent-escaped")
         << QString(triangleGltf("%2E%2E/secret.txt")) << "buffer 0 " + outside;
     QTest::newRow("buffer through a link to outside")
@@ -448,8 +471,8 @@ void FaultReachTest::meshClaimsBeyondTheFile_data() {
         << "its JSON chunk claims 4294967280 bytes, past the end of the [0-9]+-byte file";
     QByteArray glb = triangleGlb(0);
     glb.replace(8, 4, little32(0x7FFFFFFFu));
-    QTest::newRow("GLB: a header claiming 2 GiB") << "length.glb" << glb << QByteArray()
-                                                  << "its GLB header claims 2147483647 bytes";
+    QTest::newRow("GLB: a header claiming 2 GiB")
+        << "length.glb" << glb << QByteArray() << "its GLB header claims 2147483647 bytes";
     QTest::newRow("glTF: a buffer claiming 4 GB")
         << "long.gltf" << triangleGltf("long.bin", {}, "3", "4000000000") << tri
         << "buffer 0 claims 4000000000 bytes, but only 68 are there";
@@ -462,9 +485,8 @@ void FaultReachTest::meshClaimsBeyondTheFile_data() {
     QTest::newRow("glTF: an index past the end")
         << "index.gltf" << triangleGltf("index.bin") << triangleBuffer(7)
         << "mesh 0 primitive 0: index 7 \\(at position 2\\) is past the end of its 3 vertices";
-    QTest::newRow("glTF 1.0")
-        << "old.gltf" << QByteArray(R"({"asset": {"version": "1.0"}})") << QByteArray()
-        << "it is glTF 1.0; the preview reads glTF 2.0";
+    QTest::newRow("glTF 1.0") << "old.gltf" << QByteArray(R"({"asset": {"version": "1.0"}})")
+                              << QByteArray() << "it is glTF 1.0; the preview reads glTF 2.0";
     QByteArray faces = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n";
     for (int i = 0; i < 5000; ++i)
         faces += "f 1/1 2/1 3/1\n";
@@ -485,8 +507,9 @@ void FaultReachTest::meshClaimsBeyondTheFile() {
     const QString bin = QFileInfo(name).completeBaseName() + ".bin";
     if (!buffer.isEmpty())
         write(folder + "/" + bin, buffer);
-    const QStringList args = {"render", "--height", "h.png", "--mesh", "meshes/" + name,
-                              "--max-triangles", "1000", "--size", "16", "--out", "r.png"};
+    const QStringList args = {
+        "render", "--height", "h.png", "--mesh", "meshes/" + name, "--max-triangles",
+        "1000",   "--size",   "16",    "--out",  "r.png"};
     const auto before = snapshot(m_dir);
     const CliRun run = runCli(m_dir, args, {}, kMeshMemory);
     QVERIFY2(run.status == 1, qPrintable(run.output));
@@ -505,23 +528,23 @@ void FaultReachTest::exportNeverRemovesAnInput_data() {
     const QString held = "holds [^ ]+, a file of the earlier export that this run reads";
     QTest::newRow("the material being exported, another format")
         << QStringList{"export", "--material", "m.json", "--format", "package", "--out", "pkg"}
-        << QStringList{"export", "--material", "pkg/m.json", "--format", "gltf", "--out", "pkg",
-                       "--force"}
+        << QStringList{"export", "--material", "pkg/m.json", "--format",
+                       "gltf",   "--out",      "pkg",        "--force"}
         << held;
     QTest::newRow("the material being exported, the same format")
         << QStringList{"export", "--material", "m.json", "--format", "package", "--out", "pkg"}
-        << QStringList{"export", "--material", "pkg/m.json", "--format", "package", "--out", "pkg",
-                       "--force"}
+        << QStringList{"export",  "--material", "pkg/m.json", "--format",
+                       "package", "--out",      "pkg",        "--force"}
         << held;
     QTest::newRow("its height map")
         << QStringList{"export", "--height", "h.png", "--format", "package", "--out", "pkg"}
-        << QStringList{"export", "--height", "pkg/h_height.png", "--format", "godot", "--out",
-                       "pkg", "--force"}
+        << QStringList{"export", "--height", "pkg/h_height.png", "--format", "godot",
+                       "--out",  "pkg",      "--force"}
         << held;
     QTest::newRow("an albedo given on the command line")
         << QStringList{"export", "--material", "m.json", "--format", "package", "--out", "pkg"}
-        << QStringList{"export", "--height", "h.png", "--albedo", "pkg/m_albedo.png", "--format",
-                       "gltf", "--out", "pkg", "--force"}
+        << QStringList{"export",   "--height", "h.png", "--albedo", "pkg/m_albedo.png",
+                       "--format", "gltf",     "--out", "pkg",      "--force"}
         << held;
 }
 

@@ -44,8 +44,8 @@ void FaultSignalTest::prepare(const QString& folder) {
     QDir(folder).removeRecursively();
     QDir().mkpath(folder);
     QCOMPARE(runCli(folder, {"sample", "noise", "--size", "32", "--out", "h.png"}).status, 0);
-    for (const char* previous : {"out.png", "out.csv", "spin-000.png", "spin-001.png",
-                                 "spin-002.png"}) {
+    for (const char* previous :
+         {"out.png", "out.csv", "spin-000.png", "spin-001.png", "spin-002.png"}) {
         QFile file(folder + "/" + previous);
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.write(QByteArray("the previous ") + previous + "\n");
@@ -95,7 +95,7 @@ void FaultSignalTest::interruptAtAMoment() {
     QFETCH(QString, point);
     const QString folder = m_temp.path() + "/moment";
     prepare(folder);
-    const QString said = signal == "INT"    ? "interrupted \\(SIGINT\\)"
+    const QString said = signal == "INT"   ? "interrupted \\(SIGINT\\)"
                          : signal == "HUP" ? "hung up \\(SIGHUP\\)"
                                            : "terminated \\(SIGTERM\\)";
     PX_EXPECT_CLEAN_FAILURE(folder, args, {"PX_TEST_RAISE=" + signal + ":" + point}, 130,
@@ -142,14 +142,15 @@ void FaultSignalTest::killedRunsDebrisRemovedByTheNext_data() {
                             << "export-commit"
                             << "^\\.fresh\\.export-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
     QTest::newRow("export --force, half updated")
-        << QStringList{"export", "--height", "h.png", "--format", "godot", "--invert", "--out",
-                       "earlier", "--force"}
+        << QStringList{"export",   "--height", "h.png",   "--format", "godot",
+                       "--invert", "--out",    "earlier", "--force"}
         << "export-update"
         << "^\\.earlier\\.export-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
     const QStringList spin = {"render", "--height", "h.png", "--turntable", "3",
                               "--size", "16",       "--out", "spin.png"};
     QTest::newRow("render --turntable, a frame half written")
-        << spin << "write" << "^\\.spin-000\\.png\\.set-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
+        << spin << "write"
+        << "^\\.spin-000\\.png\\.set-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
     QTest::newRow("render --turntable, every frame staged")
         << spin << "frames-commit"
         << "^\\.spin-000\\.png\\.set-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
@@ -185,7 +186,7 @@ void FaultSignalTest::killedRunsDebrisRemovedByTheNext() {
     // Nothing hidden is left but what was there before: no stage, no temporary, no lock.
     for (const QString& name : snapshot(folder).keys()) {
         const QString base = name.section('/', -1, -1).isEmpty() ? name.section('/', -2, -2)
-                                                                  : name.section('/', -1, -1);
+                                                                 : name.section('/', -1, -1);
         QVERIFY2(!base.startsWith('.') || before.contains(name) || base == ".parallax-export",
                  qPrintable("left behind: " + name));
     }
@@ -261,13 +262,13 @@ void FaultSignalTest::secondWriterRefused_data() {
     QTest::addColumn<QString>("point");
     QTest::addColumn<QString>("target");
     QTest::newRow("export --force")
-        << QStringList{"export", "--height", "h.png", "--format", "godot", "--invert", "--out",
-                       "earlier", "--force"}
+        << QStringList{"export",   "--height", "h.png",   "--format", "godot",
+                       "--invert", "--out",    "earlier", "--force"}
         << "export-commit"
         << "earlier";
     QTest::newRow("render --turntable")
-        << QStringList{"render", "--height", "h.png", "--turntable", "3", "--size", "16", "--out",
-                       "spin.png"}
+        << QStringList{"render", "--height", "h.png", "--turntable", "3",
+                       "--size", "16",       "--out", "spin.png"}
         << "frames-commit"
         << "spin-000.png";
 }

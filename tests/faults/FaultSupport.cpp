@@ -20,7 +20,8 @@ CliRun runCli(const QString& folder, const QStringList& arguments, const QString
     QProcess process;
     if (addressSpace > 0) {
         process.setChildProcessModifier([addressSpace] {
-            const rlimit limit{static_cast<rlim_t>(addressSpace), static_cast<rlim_t>(addressSpace)};
+            const rlimit limit{static_cast<rlim_t>(addressSpace),
+                               static_cast<rlim_t>(addressSpace)};
             ::setrlimit(RLIMIT_AS, &limit);
         });
     }
@@ -65,8 +66,7 @@ QMap<QString, QByteArray> snapshot(const QString& folder) {
             entries.insert(name, "<link to " + QFile::symLinkTarget(path).toUtf8() + ">");
         } else if (!S_ISREG(st.st_mode)) {
             entries.insert(name, "<special " + QByteArray::number(st.st_mode & S_IFMT) + " " +
-                                     QByteArray::number(static_cast<qulonglong>(st.st_rdev)) +
-                                     ">");
+                                     QByteArray::number(static_cast<qulonglong>(st.st_rdev)) + ">");
         } else {
             QFile file(path);
             if (file.open(QIODevice::ReadOnly))

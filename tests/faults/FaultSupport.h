@@ -57,9 +57,9 @@ void unmount(const QString& folder);
         const auto before_ = px::faults::snapshot(folder);                                         \
         const px::faults::CliRun run_ = px::faults::runCli(folder, args, env);                     \
         const auto after_ = px::faults::snapshot(folder);                                          \
-        const bool named_ =                                                                        \
-            run_.output.contains("error: ") && run_.output.contains(file) &&                       \
-            !run_.output.contains(QRegularExpression("\\.tmp[0-9]+-|(export|set)-(tmp|old)[0-9]")); \
+        const bool named_ = run_.output.contains("error: ") && run_.output.contains(file) &&       \
+                            !run_.output.contains(                                                 \
+                                QRegularExpression("\\.tmp[0-9]+-|(export|set)-(tmp|old)[0-9]"));  \
         const bool reason_ = run_.output.contains(QRegularExpression(reason));                     \
         px::faults::record(run_, run_.status == (rc) && named_ && reason_, run_.signal != 0,       \
                            px::faults::bytesLost(before_, after_));                                \

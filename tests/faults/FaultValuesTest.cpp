@@ -64,16 +64,17 @@ void FaultValuesTest::hugeFloatTexelRefused_data() {
     QTest::addColumn<QString>("file");
     QTest::addColumn<QString>("reason");
     QTest::newRow("an albedo") << QStringList{"render", "--height", "h.png", "--albedo", "huge.exr",
-                                              "--size", "16", "--out", "r.png"}
+                                              "--size", "16",       "--out", "r.png"}
                                << "huge.exr"
                                << "texel \\(3, 2\\) channel 0 holds 3e\\+38, beyond the 100 a "
                                   "colour map may hold";
     QTest::newRow("a material's albedo")
         << QStringList{"render", "--material", "huge.json", "--size", "16", "--out", "r.png"}
-        << "huge.exr" << "holds 3e\\+38, beyond the 100 a colour map may hold";
+        << "huge.exr"
+        << "holds 3e\\+38, beyond the 100 a colour map may hold";
     QTest::newRow("an environment")
-        << QStringList{"render", "--height", "h.png", "--environment", "huge-env.exr", "--size",
-                       "16", "--out", "r.png"}
+        << QStringList{"render", "--height", "h.png", "--environment", "huge-env.exr",
+                       "--size", "16",       "--out", "r.png"}
         << "huge-env.exr"
         << "texel \\(3, 2\\) channel 0 holds 3e\\+38, beyond the 1e\\+20 an environment's radiance "
            "may reach";
@@ -89,11 +90,9 @@ void FaultValuesTest::hugeFloatTexelRefused() {
 void FaultValuesTest::duplicateJsonKeyRefused() {
     write(m_dir + "/dup.json", R"({"format": "parallax-studio-material", "version": 1,
  "maps": {"height": "h.png"}, "technique": {"name": "pom", "name": "exact"}})");
-    PX_EXPECT_CLEAN_FAILURE(m_dir,
-                            (QStringList{"render", "--material", "dup.json", "--size", "16",
-                                         "--out", "r.png"}),
-                            {}, 1, "dup.json",
-                            "/technique/name: the key appears twice in one object");
+    PX_EXPECT_CLEAN_FAILURE(
+        m_dir, (QStringList{"render", "--material", "dup.json", "--size", "16", "--out", "r.png"}),
+        {}, 1, "dup.json", "/technique/name: the key appears twice in one object");
 }
 
 // "--seed 010" is ten, as written: the same map as --seed 10, another than --seed 8 (which octal
@@ -120,10 +119,10 @@ void FaultValuesTest::relativeXdgCacheHomeIgnored() {
     QDir().mkpath(m_dir + "/run");
     QVERIFY(QFile::copy(m_dir + "/h.png", m_dir + "/run/h.png"));
     const auto before = snapshot(m_dir + "/run");
-    const CliRun run = runCli(m_dir + "/run",
-                              {"recommend", "--height", "h.png", "--max-polar", "60", "--techniques",
-                               "cone"},
-                              {"XDG_CACHE_HOME=relative-cache", "HOME=" + home});
+    const CliRun run =
+        runCli(m_dir + "/run",
+               {"recommend", "--height", "h.png", "--max-polar", "60", "--techniques", "cone"},
+               {"XDG_CACHE_HOME=relative-cache", "HOME=" + home});
     QVERIFY2(run.status == 0, qPrintable(run.output));
     QCOMPARE(difference(before, snapshot(m_dir + "/run")), QString());
     QVERIFY2(!QDir(home + "/.cache/parallax-studio/cone-maps").entryList({"cone-*"}).isEmpty(),

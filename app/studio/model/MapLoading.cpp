@@ -15,9 +15,8 @@ namespace px::studio {
 namespace {
 
 Result<Image> readMapImage(const std::string& path, int minChannels, const char* what) {
-    Result<Image> image = readImage(path, std::string_view(what) == "colour map"
-                                              ? colourMapReading()
-                                              : ImageReadOptions{});
+    Result<Image> image = readImage(
+        path, std::string_view(what) == "colour map" ? colourMapReading() : ImageReadOptions{});
     if (!image)
         return image.error();
     if (image->channels < minChannels)

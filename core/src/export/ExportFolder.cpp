@@ -84,6 +84,10 @@ Result<ExportFolder> ExportFolder::begin(const fs::path& requested, bool force) 
     std::vector<std::string> earlier;
     const fs::file_status status = fs::symlink_status(target, ec);
     if (fs::exists(status)) {
+        if (fs::is_symlink(status))
+            return fileError(where(requested),
+                             "is a symbolic link (to " + fs::read_symlink(target, ec).string() +
+                                 "); an export replaces whole folders: give the folder itself");
         if (!fs::is_directory(status))
             return fileError(where(requested), "exists and is not a folder; choose another output");
         const bool empty = fs::is_empty(target, ec);
@@ -142,8 +146,8 @@ Result<ExportFolder::Committed> ExportFolder::commitStaged(std::string_view desc
     if (!m_replace) {
         testInterruptPoint("export-commit");
         if (Status s = m_stage.commitAsFolder(m_target); !s)
-            return fileError(where(m_target), "cannot move the export into place (" +
-                                                  s.error().message + ")");
+            return fileError(where(m_target),
+                             "cannot move the export into place (" + s.error().message + ")");
         return Committed{m_files, {}};
     }
     return updateInPlace();

@@ -113,8 +113,9 @@ Result<InputFile> InputFile::open(const std::string& path, std::string_view role
     if (S_ISDIR(st.st_mode))
         return fileError(path, "is a folder, not a file");
     if (!S_ISREG(st.st_mode))
-        return fileError(path, "is " + fileKind(st.st_mode) + ", not a regular file; only "
-                                                              "regular files are read");
+        return fileError(path, "is " + fileKind(st.st_mode) +
+                                   ", not a regular file; only "
+                                   "regular files are read");
     ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
     file.m_size = static_cast<std::uint64_t>(st.st_size);
     file.m_identity = identityFrom(st);
@@ -153,8 +154,7 @@ Status InputFile::readAt(std::uint64_t offset, void* out, std::size_t bytes) con
     auto* to = static_cast<char*>(out);
     std::size_t done = 0;
     while (done < bytes) {
-        const ssize_t n =
-            ::pread(m_fd, to + done, bytes - done, static_cast<off_t>(offset + done));
+        const ssize_t n = ::pread(m_fd, to + done, bytes - done, static_cast<off_t>(offset + done));
         if (n < 0 && errno == EINTR)
             continue;
         if (n < 0)

@@ -92,8 +92,8 @@ Result<fs::path> outputTarget(const fs::path& path) {
     const fs::path real = fs::canonical(path, ec);
     if (ec)
         return fileError(path.string(), "is a symbolic link" + linkTarget(path) +
-                                             " to nothing that exists: refusing to create a file "
-                                             "there; name the file itself");
+                                            " to nothing that exists: refusing to create a file "
+                                            "there; name the file itself");
     if (Status s = checkReplaceable(real); !s)
         return fileError(path.string(), "is a symbolic link to " + real.string() + ", which " +
                                             s.error().message.substr(real.string().size() + 2));
@@ -114,8 +114,8 @@ Status moveFolderInto(const fs::path& from, const fs::path& to) {
         return fileError(to.string(), "is " + fileKind(st.st_mode) + ", not a folder");
     // rename() replaces only an empty folder, atomically.
     if (::rename(from.c_str(), to.c_str()) != 0)
-        return fileError(to.string(), "cannot move the folder into place (" +
-                                          systemReason(errno) + ")");
+        return fileError(to.string(),
+                         "cannot move the folder into place (" + systemReason(errno) + ")");
     return success();
 }
 

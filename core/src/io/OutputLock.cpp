@@ -64,10 +64,10 @@ Result<OutputLock> OutputLock::take(const fs::path& requested) {
             continue;
         }
         const std::string pid = std::to_string(::getpid()) + "\n";
-        if (::ftruncate(fd, 0) == 0)
-            [[maybe_unused]] const ssize_t n = ::pwrite(fd, pid.data(), pid.size(), 0);
-        noteCreated({static_cast<std::uint64_t>(held.st_dev),
-                     static_cast<std::uint64_t>(held.st_ino)});
+        if (::ftruncate(fd, 0) == 0) [[maybe_unused]]
+            const ssize_t n = ::pwrite(fd, pid.data(), pid.size(), 0);
+        noteCreated(
+            {static_cast<std::uint64_t>(held.st_dev), static_cast<std::uint64_t>(held.st_ino)});
         OutputLock lock;
         lock.m_path = path;
         lock.m_fd = fd;

@@ -197,13 +197,14 @@ Result<std::vector<std::string>> StagedSet::commitInto(const Update& update) {
         }
         if (Status s = checkReplaceable(path); !s) // a regular file: refused only as an input
             return s.error();
-        journal.removals.push_back({name, static_cast<std::uint64_t>(st.st_dev),
-                                    static_cast<std::uint64_t>(st.st_ino)});
+        journal.removals.push_back(
+            {name, static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)});
     }
     testInterruptPoint(update.commitPoint);
 
     const InterruptDeferral deferral; // from the journal on, the commit is decided
-    if (Status s = writeFileAtomically((m_stage / kJournal).string(), journalText(m_stage, journal));
+    if (Status s =
+            writeFileAtomically((m_stage / kJournal).string(), journalText(m_stage, journal));
         !s)
         return s.error();
     syncFolder(m_stage);

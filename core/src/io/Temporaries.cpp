@@ -9,8 +9,8 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdint>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <fcntl.h>
@@ -77,8 +77,8 @@ std::optional<Owner> temporaryOwner(const std::string& entry, const std::string&
         }
         if (!digits(pid) || !digits(n) || pid.size() >= 10)
             continue;
-        const bool hex = host.size() == 8 && host.find_first_not_of("0123456789abcdef") ==
-                                                 std::string_view::npos;
+        const bool hex = host.size() == 8 &&
+                         host.find_first_not_of("0123456789abcdef") == std::string_view::npos;
         if (!host.empty() && !hex && "." + std::string(host) != extension)
             continue;
         return Owner{std::stol(std::string(pid)), hex ? std::string(host) : std::string()};
@@ -123,9 +123,9 @@ bool provablyDead(const fs::path& entry, const Owner& owner) {
 
 fs::path temporarySibling(const fs::path& target, std::string_view role) {
     static std::atomic<unsigned> counter{0};
-    return target.parent_path() / ("." + target.filename().string() + "." + std::string(role) +
-                                   std::to_string(::getpid()) + "-" +
-                                   std::to_string(counter++) + "." + hostToken());
+    return target.parent_path() /
+           ("." + target.filename().string() + "." + std::string(role) +
+            std::to_string(::getpid()) + "-" + std::to_string(counter++) + "." + hostToken());
 }
 
 void holdTemporary(int fd) {

@@ -51,8 +51,8 @@ struct Problems {
 
 Image loadImage(const std::string& file, int minChannels, const char* what,
                 const AssetLoadOptions& options, Problems& problems) {
-    ImageReadOptions read = std::string_view(what) == "colour map" ? colourMapReading()
-                                                                    : ImageReadOptions{};
+    ImageReadOptions read =
+        std::string_view(what) == "colour map" ? colourMapReading() : ImageReadOptions{};
     read.maxSide = options.allowLarge ? (1 << 30) : 16384;
     Result<Image> image = readImage(file, read);
     if (!image) {

@@ -42,11 +42,14 @@ Status saveMaterial(const Material& material, const std::string& path) {
 
 Status noteMaterialMaps(const Material& material, const std::string& materialFile) {
     const MaterialMaps& maps = material.maps;
-    const std::pair<const std::string*, const char*> named[] = {
-        {&maps.albedo, "albedo"}, {&maps.height, "height"},
-        {&maps.normal, "normal"}, {&maps.cone, "cone"},
-        {&maps.relaxedCone, "relaxed cone"}, {&maps.ao, "AO"},
-        {&maps.roughness, "roughness"}, {&maps.metallic, "metallic"}};
+    const std::pair<const std::string*, const char*> named[] = {{&maps.albedo, "albedo"},
+                                                                {&maps.height, "height"},
+                                                                {&maps.normal, "normal"},
+                                                                {&maps.cone, "cone"},
+                                                                {&maps.relaxedCone, "relaxed cone"},
+                                                                {&maps.ao, "AO"},
+                                                                {&maps.roughness, "roughness"},
+                                                                {&maps.metallic, "metallic"}};
     const std::string owner = materialFile.empty() ? material.name : materialFile;
     for (const auto& [map, what] : named) {
         const std::string role = std::string("the ") + what + " map of " + owner;

@@ -293,8 +293,7 @@ Result<Material> parseMaterial(std::string_view text, const std::string& source,
     };
     std::vector<Frame> frames;
     std::string duplicate;
-    const json::parser_callback_t noDuplicates = [&](int, json::parse_event_t event,
-                                                     json& parsed) {
+    const json::parser_callback_t noDuplicates = [&](int, json::parse_event_t event, json& parsed) {
         const auto open = [&](bool object) {
             std::string pointer;
             if (!frames.empty())

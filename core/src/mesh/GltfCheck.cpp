@@ -147,8 +147,8 @@ Status Checker::buffers(const json& root, std::optional<std::uint64_t> binOffset
             return bad(what + "'s uri is not a string");
         } else if (const std::string text = uri->get<std::string>(); text.starts_with("data:")) {
             const std::size_t comma = text.find(',');
-            if (comma == std::string::npos || text.substr(0, comma).find(";base64") ==
-                                                  std::string::npos)
+            if (comma == std::string::npos ||
+                text.substr(0, comma).find(";base64") == std::string::npos)
                 return bad(what + "'s data: uri is not base64");
             b.bytes = base64(text.substr(comma + 1));
             if (!b.bytes)
@@ -242,7 +242,8 @@ std::uint64_t componentBytes(std::uint64_t type) {
 
 std::uint64_t components(const std::string& type) {
     static const std::pair<const char*, std::uint64_t> table[] = {
-        {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}, {"MAT2", 4}, {"MAT3", 9}, {"MAT4", 16}};
+        {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4},
+        {"MAT2", 4},   {"MAT3", 9}, {"MAT4", 16}};
     for (const auto& [name, n] : table) {
         if (type == name)
             return n;
@@ -307,8 +308,7 @@ Result<std::uint64_t> Checker::accessorCount(const json& root, std::uint64_t ind
             return bad(name + "'s sparse part is incomplete");
         if (Status s = fits(indices, *k, indexBytes, name + "'s sparse indices"); !s)
             return s.error();
-        if (Status s = fits(member(*sparse, "values"), *k, element, name + "'s sparse values");
-            !s)
+        if (Status s = fits(member(*sparse, "values"), *k, element, name + "'s sparse values"); !s)
             return s.error();
     }
     return *n;
@@ -328,8 +328,7 @@ Result<std::vector<std::uint32_t>> Checker::indices(const json& a, const std::st
     const std::uint64_t n = a.at("count").get<std::uint64_t>();
     const std::uint64_t type = a.at("componentType").get<std::uint64_t>();
     const std::uint64_t size = componentBytes(type);
-    if (a.value("type", std::string()) != "SCALAR" || type == 5120 || type == 5122 ||
-        type == 5126)
+    if (a.value("type", std::string()) != "SCALAR" || type == 5120 || type == 5122 || type == 5126)
         return bad(what + "'s indices are not unsigned integers");
     std::vector<std::uint32_t> values(static_cast<std::size_t>(n), 0);
     auto load = [&](const json& holder, std::vector<std::uint32_t>& into,
@@ -339,8 +338,8 @@ Result<std::vector<std::uint32_t>> Checker::indices(const json& a, const std::st
         const View& v = m_views[holder.at("bufferView").get<std::size_t>()];
         const std::uint64_t offset = holder.value("byteOffset", std::uint64_t{0});
         const std::uint64_t stride = v.stride > 0 ? v.stride : elementSize;
-        std::vector<unsigned char> bytes(static_cast<std::size_t>(
-            into.empty() ? 0 : stride * (into.size() - 1) + elementSize));
+        std::vector<unsigned char> bytes(
+            static_cast<std::size_t>(into.empty() ? 0 : stride * (into.size() - 1) + elementSize));
         if (!bytes.empty()) {
             if (Status s = read(v, offset, bytes.data(), bytes.size()); !s)
                 return s;
@@ -367,8 +366,7 @@ Result<std::vector<std::uint32_t>> Checker::indices(const json& a, const std::st
         for (std::size_t k = 0; k < where.size(); ++k) {
             if (where[k] >= values.size())
                 return bad(what + "'s sparse index " + std::to_string(where[k]) +
-                           " is past the end of its " + std::to_string(values.size()) +
-                           " indices");
+                           " is past the end of its " + std::to_string(values.size()) + " indices");
             values[where[k]] = replaced[k];
         }
     }
@@ -480,7 +478,8 @@ Status checkGltfDocument(const InputFile& file, const MeshScope& scope, std::siz
 } // namespace
 
 Error tooManyTriangles(const std::string& file, std::size_t triangles, std::size_t limit) {
-    return fileError(file, std::to_string(triangles) + " triangles, more than the preview's limit of " +
+    return fileError(file, std::to_string(triangles) +
+                               " triangles, more than the preview's limit of " +
                                std::to_string(limit));
 }
 
@@ -499,8 +498,8 @@ namespace {
 Status checkGltfDocument(const InputFile& file, const MeshScope& scope, std::size_t maxTriangles) {
     Checker checker(file, scope);
     unsigned char header[20] = {};
-    const bool binary = file.size() >= 12 && file.readAt(0, header, 4) && little32(header) ==
-                                                                            kGlbMagic;
+    const bool binary =
+        file.size() >= 12 && file.readAt(0, header, 4) && little32(header) == kGlbMagic;
     if (!binary) {
         if (file.size() > kMaxJsonBytes)
             return checker.bad("its JSON is " + std::to_string(file.size()) +

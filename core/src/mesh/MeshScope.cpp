@@ -38,8 +38,9 @@ public:
     }
     size_t Write(const void*, size_t, size_t) override { return 0; }
     aiReturn Seek(size_t offset, aiOrigin origin) override {
-        const std::uint64_t base =
-            origin == aiOrigin_SET ? 0 : origin == aiOrigin_CUR ? m_at : m_file.size();
+        const std::uint64_t base = origin == aiOrigin_SET   ? 0
+                                   : origin == aiOrigin_CUR ? m_at
+                                                            : m_file.size();
         if (base + offset > m_file.size())
             return aiReturn_FAILURE;
         m_at = base + offset;
@@ -73,7 +74,7 @@ bool MeshScope::inside(const fs::path& path) const {
 }
 
 Result<fs::path> MeshScope::resolve(const std::string& reference, const std::string& what,
-                                   const fs::path& base) const {
+                                    const fs::path& base) const {
     const std::size_t colon = reference.find(':');
     if (colon != std::string::npos && colon > 1 && reference.find('/') > colon)
         return fileError(m_meshFile, what + " refers to " + reference +
@@ -122,8 +123,8 @@ bool ScopedIoSystem::Exists(const char* file) const {
 }
 
 Assimp::IOStream* ScopedIoSystem::Open(const char* file, const char* mode) {
-    if (file == nullptr || mode == nullptr || std::string(mode).find_first_of("wa+") !=
-                                                  std::string::npos)
+    if (file == nullptr || mode == nullptr ||
+        std::string(mode).find_first_of("wa+") != std::string::npos)
         return nullptr;
     if (!m_scope.inside(file)) {
         m_refusal = std::string(file) + " lies outside the mesh's folder";

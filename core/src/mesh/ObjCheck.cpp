@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <iterator>
+#include <sstream>
 #include <vector>
 
 namespace px::mesh {
@@ -74,9 +76,8 @@ template <typename Line> Status eachLine(const InputFile& file, Line line) {
 
 bool textureStatement(const std::string& keyword) {
     static const char* names[] = {"bump", "disp", "decal", "refl", "norm"};
-    return keyword.starts_with("map_") ||
-           std::any_of(std::begin(names), std::end(names),
-                       [&](const char* n) { return keyword == n; });
+    return keyword.starts_with("map_") || std::any_of(std::begin(names), std::end(names),
+                                                      [&](const char* n) { return keyword == n; });
 }
 
 // A material library: its textures are the mesh's files too (not read by the preview, but no
@@ -88,21 +89,35 @@ Status checkLibrary(const std::filesystem::path& path, const MeshScope& scope) {
     Result<InputFile> file = scope.open(path, "material library " + path.filename().string());
     if (!file)
         return file.error(); // a FIFO, or an output of the run
-    return eachLine(*file, [&](const std::string& keyword, const std::string& argument,
-                               std::uint64_t) -> Status {
-        if (!textureStatement(keyword))
-            return success();
-        const std::string rest = trimmed(argument);
-        const std::size_t space = rest.find_last_of(" \t");
-        const std::string name = space == std::string::npos ? rest : rest.substr(space + 1);
-        if (name.empty())
-            return success();
-        Result<std::filesystem::path> texture = scope.resolve(
-            name, "texture " + name + " of " + path.filename().string(), path.parent_path());
-        if (!texture)
-            return texture.error();
-        return noteInput(texture->string(), "a texture of mesh " + scope.meshFile());
-    });
+    return eachLine(
+        *file,
+        [&](const std::string& keyword, const std::string& argument, std::uint64_t) -> Status {
+            if (!textureStatement(keyword))
+                return success();
+            const std::string rest = trimmed(argument);
+            const std::size_t space = rest.find_last_of(" \t");
+            const std::string name = space == std::string::npos ? rest : rest.substr(space + 1);
+            if (name.empty())
+                return success();
+            Result<std::filesystem::path> texture = scope.resolve(
+                name, "texture " + name + " of " + path.filename().string(), path.parent_path());
+            if (!texture)
+                return texture.error();
+            return noteInput(texture->string(), "a texture of mesh " + scope.meshFile());
+        });
+}
+
+// The material libraries a mtllib line names: one name with spaces, as Assimp reads it, or, when
+// no such file is there, each word, as the format has it.
+std::vector<std::string> libraryNames(const std::string& argument, const MeshScope& scope) {
+    std::vector<std::string> names{trimmed(argument)};
+    std::error_code ec;
+    const std::filesystem::path folder = std::filesystem::path(scope.meshFile()).parent_path();
+    if (!std::filesystem::exists(folder / names.front(), ec)) {
+        std::istringstream words(names.front());
+        names.assign(std::istream_iterator<std::string>(words), {});
+    }
+    return names;
 }
 
 } // namespace
@@ -110,9 +125,8 @@ Status checkLibrary(const std::filesystem::path& path, const MeshScope& scope) {
 Status checkObj(const InputFile& file, const MeshScope& scope, std::size_t maxTriangles) {
     std::uint64_t triangles = 0, positions = 0, uvs = 0, normals = 0;
     std::vector<std::filesystem::path> libraries;
-    const Status read = eachLine(file, [&](const std::string& keyword,
-                                           const std::string& argument,
-                                           std::uint64_t tokens) -> Status {
+    const auto line = [&](const std::string& keyword, const std::string& argument,
+                          std::uint64_t tokens) -> Status {
         if (keyword == "f" && tokens > 2)
             triangles += tokens - 2;
         else if (keyword == "v")
@@ -122,16 +136,18 @@ Status checkObj(const InputFile& file, const MeshScope& scope, std::size_t maxTr
         else if (keyword == "vn")
             ++normals;
         else if (keyword == "mtllib" && !trimmed(argument).empty()) {
-            Result<std::filesystem::path> path =
-                scope.resolve(trimmed(argument), "material library " + trimmed(argument));
-            if (!path)
-                return path.error();
-            libraries.push_back(*path);
+            for (const std::string& name : libraryNames(argument, scope)) {
+                Result<std::filesystem::path> path =
+                    scope.resolve(name, "material library " + name);
+                if (!path)
+                    return path.error();
+                libraries.push_back(*path);
+            }
         }
         return success();
-    });
-    if (!read)
-        return read;
+    };
+    if (Status s = eachLine(file, line); !s)
+        return s;
     if (triangles > maxTriangles)
         return tooManyTriangles(scope.meshFile(), static_cast<std::size_t>(triangles),
                                 maxTriangles);
@@ -139,10 +155,10 @@ Status checkObj(const InputFile& file, const MeshScope& scope, std::size_t maxTr
     // would spend on nothing.
     const std::uint64_t most = std::max<std::uint64_t>(3 * std::uint64_t{maxTriangles}, 3);
     if (std::max({positions, uvs, normals}) > most)
-        return fileError(scope.meshFile(),
-                         std::to_string(std::max({positions, uvs, normals})) +
-                             " vertices, more than " + std::to_string(maxTriangles) +
-                             " triangles (the preview's limit) can use");
+        return fileError(scope.meshFile(), std::to_string(std::max({positions, uvs, normals})) +
+                                               " vertices, more than " +
+                                               std::to_string(maxTriangles) +
+                                               " triangles (the preview's limit) can use");
     for (const std::filesystem::path& library : libraries) {
         if (Status s = checkLibrary(library, scope); !s)
             return s;

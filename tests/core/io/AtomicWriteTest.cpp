@@ -9,8 +9,8 @@
 
 #include <QTemporaryDir>
 #include <QtTest>
-#include <ctime>
 #include <cstdlib>
+#include <ctime>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
@@ -127,15 +127,15 @@ void AtomicWriteTest::staleTemporariesOfDeadRunsRemoved_data() {
     QTest::addColumn<bool>("old");     // unchanged for two hours
     QTest::addColumn<bool>("removed");
     QTest::newRow("our host, dead, free") << ".out.tmpDEAD-0.HOST" << false << false << true;
-    QTest::newRow("our host, dead, a folder") << ".out.export-tmpDEAD-3.HOST/" << false << false
-                                              << true;
-    QTest::newRow("our host, dead, a frames stage") << ".out.set-tmpDEAD-1.HOST/" << false << false
-                                                    << true;
+    QTest::newRow("our host, dead, a folder")
+        << ".out.export-tmpDEAD-3.HOST/" << false << false << true;
+    QTest::newRow("our host, dead, a frames stage")
+        << ".out.set-tmpDEAD-1.HOST/" << false << false << true;
     QTest::newRow("our host, dead pid but locked (an inherited descriptor)")
         << ".out.tmpDEAD-0.HOST" << true << false << false;
     QTest::newRow("our host, live") << ".out.tmpLIVE-0.HOST" << false << false << false;
-    QTest::newRow("another container, writing") << ".out.tmpDEAD-0.0badf00d" << true << true
-                                                << false;
+    QTest::newRow("another container, writing")
+        << ".out.tmpDEAD-0.0badf00d" << true << true << false;
     QTest::newRow("another container, free but recent")
         << ".out.tmpDEAD-0.0badf00d" << false << false << false;
     QTest::newRow("another container, free and old beyond doubt")

@@ -3,9 +3,10 @@
 // an input is refused when it is met, a file the run wrote itself is not an input, special files
 // are never waited on, replaced or deleted, and removals keep what is not the caller's.
 
+#include "parallax/io/OutputGate.h"
+
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/io/Inputs.h"
-#include "parallax/io/OutputGate.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -32,7 +33,9 @@ private slots:
     void removalsKeepWhatIsNotTheCallers();
 
 private:
-    std::string path(const std::string& name) const { return m_dir->filePath(QString::fromStdString(name)).toStdString(); }
+    std::string path(const std::string& name) const {
+        return m_dir->filePath(QString::fromStdString(name)).toStdString();
+    }
     std::unique_ptr<QTemporaryDir> m_dir;
 };
 
@@ -49,13 +52,20 @@ void OutputGateTest::inputsKnownByIdentity_data() {
     QTest::addColumn<QString>("read");   // how the run named the input
     QTest::addColumn<QString>("target"); // how an output names it
     QTest::addColumn<QString>("reason");
-    const QString input = "is the same file as [^ ]*h.png \\(the height map\\), which this run reads";
-    QTest::newRow("same name") << "h.png" << "h.png" << input;
-    QTest::newRow("./sub/..") << "h.png" << "sub/../h.png" << input;
-    QTest::newRow("a hard link") << "h.png" << "hard.png" << input;
-    QTest::newRow("read through a link") << "link.png" << "h.png"
-                                         << "is the same file as [^ ]*link.png \\(the height map\\)";
-    QTest::newRow("a link to it") << "h.png" << "link.png"
+    const QString input =
+        "is the same file as [^ ]*h.png \\(the height map\\), which this run reads";
+    QTest::newRow("same name") << "h.png"
+                               << "h.png" << input;
+    QTest::newRow("./sub/..") << "h.png"
+                              << "sub/../h.png" << input;
+    QTest::newRow("a hard link") << "h.png"
+                                 << "hard.png" << input;
+    QTest::newRow("read through a link")
+        << "link.png"
+        << "h.png"
+        << "is the same file as [^ ]*link.png \\(the height map\\)";
+    QTest::newRow("a link to it") << "h.png"
+                                  << "link.png"
                                   << "is a symbolic link to [^ ]*h.png, which is the same file as";
 }
 
@@ -131,9 +141,12 @@ void OutputGateTest::specialFilesNeverWaitedOn() {
 void OutputGateTest::onlyRegularFilesReplaced_data() {
     QTest::addColumn<QString>("target");
     QTest::addColumn<QString>("reason");
-    QTest::newRow("a FIFO") << "pipe.png" << "is a FIFO \\(named pipe\\), not a regular file";
-    QTest::newRow("a device") << "/dev/null" << "is a character device, not a regular file";
-    QTest::newRow("a folder") << "sub" << "is a folder; give a file name";
+    QTest::newRow("a FIFO") << "pipe.png"
+                            << "is a FIFO \\(named pipe\\), not a regular file";
+    QTest::newRow("a device") << "/dev/null"
+                              << "is a character device, not a regular file";
+    QTest::newRow("a folder") << "sub"
+                              << "is a folder; give a file name";
     QTest::newRow("a link to a FIFO") << "piped.png"
                                       << "is a symbolic link to [^ ]*pipe.png, which is a FIFO";
     QTest::newRow("a dangling link") << "dangling.png"
@@ -147,7 +160,8 @@ void OutputGateTest::onlyRegularFilesReplaced() {
     QVERIFY(::mkfifo(path("pipe.png").c_str(), 0644) == 0);
     fs::create_symlink("none.png", path("dangling.png"));
     fs::create_symlink("pipe.png", path("piped.png"));
-    const std::string file = target.startsWith('/') ? target.toStdString() : path(target.toStdString());
+    const std::string file =
+        target.startsWith('/') ? target.toStdString() : path(target.toStdString());
     const Status s = writeFileAtomically(file, "x");
     QVERIFY(!s.ok());
     QVERIFY2(QString::fromStdString(s.error().message).contains(QRegularExpression(reason)),
@@ -167,7 +181,9 @@ void OutputGateTest::linkWrittenThrough() {
     QVERIFY(writeFileAtomically(path("out.png"), "new").ok());
     QVERIFY(fs::is_symlink(path("out.png")));
     QCOMPARE(readTextFile(path("shared/out.png"), false).value(), std::string("new"));
-    QCOMPARE(QDir(QString::fromStdString(path("shared"))).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot), QStringList{"out.png"});
+    QCOMPARE(QDir(QString::fromStdString(path("shared")))
+                 .entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot),
+             QStringList{"out.png"});
 }
 
 void OutputGateTest::removalsKeepWhatIsNotTheCallers() {

@@ -3,11 +3,12 @@
 // through the moves is finished by the next run's sweep, removing only the files it listed while
 // they are still the same; one writer at a time (OutputLock).
 
+#include "parallax/io/StagedSet.h"
+
 #include "parallax/image/ImageSet.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/io/Inputs.h"
 #include "parallax/io/OutputLock.h"
-#include "parallax/io/StagedSet.h"
 #include "parallax/io/Temporaries.h"
 
 #include <QTemporaryDir>
@@ -42,7 +43,8 @@ private:
         return text ? *text : std::string("<missing>");
     }
     QStringList hidden() const {
-        return QDir(m_dir->path()).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot)
+        return QDir(m_dir->path())
+            .entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot)
             .filter(QRegularExpression("^\\."));
     }
     std::unique_ptr<QTemporaryDir> m_dir;
@@ -193,8 +195,7 @@ void StagedSetTest::oneWriterAtATime() {
         QVERIFY(fs::exists(path(".out.lock")));
         const Result<OutputLock> second = OutputLock::take(path("out"));
         QVERIFY(!second.ok());
-        QVERIFY2(second.error().message.find("another run (process " +
-                                             std::to_string(::getpid()) +
+        QVERIFY2(second.error().message.find("another run (process " + std::to_string(::getpid()) +
                                              ") is writing it now") != std::string::npos,
                  second.error().message.c_str());
     }

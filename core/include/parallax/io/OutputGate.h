@@ -4,11 +4,11 @@
 // links and other spellings are caught), never a folder, a FIFO, a device, a socket or a symbolic
 // link. A single file named through a symbolic link is written through it (outputTarget): the
 // link's target, a regular file, is replaced atomically and the link stays a link, as an editor
-// saves a linked document; a link to nothing or to a special file is refused. It deletes only what a caller
-// can say is the project's own: this run's temporaries, the files an earlier export listed in its
-// manifest, cache entries, and the leftovers of dead runs; and even those never when they are
-// inputs. The signal handler's unlink() of this run's registered temporaries (Temporaries.cpp) is
-// the one other place that deletes. `build.OnlyTheGateDeletes` checks that no other code does.
+// saves a linked document; a link to nothing or to a special file is refused. It deletes only what
+// a caller can say is the project's own: this run's temporaries, the files an earlier export listed
+// in its manifest, cache entries, and the leftovers of dead runs; and even those never when they
+// are inputs. The signal handler's unlink() of this run's registered temporaries (Temporaries.cpp)
+// is the one other place that deletes. `build.OnlyTheGateDeletes` checks that no other code does.
 
 #include "parallax/Result.h"
 

@@ -41,8 +41,8 @@ public:
     Status commitAsFolder(const std::filesystem::path& target);
 
     struct Update {
-        std::filesystem::path into;       // the folder the files go to
-        std::vector<std::string> moves;   // staged names, moved in this order (the last: a manifest)
+        std::filesystem::path into;     // the folder the files go to
+        std::vector<std::string> moves; // staged names, moved in this order (the last: a manifest)
         std::vector<std::string> removals; // names in `into` to remove (an earlier export's)
         const char* commitPoint = "";      // test hooks (Temporaries.h): all staged; half moved
         const char* updatePoint = "";
