@@ -7,6 +7,7 @@
 // after Assimp's allocations would fail them.
 
 #include "FaultSupport.h"
+#include "parallax/image/ImageFile.h"
 
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -92,6 +93,7 @@ private slots:
     void specialFileAsInput_data();
     void specialFileAsInput();
     void fifoInTheConeCacheDoesNotHang();
+    void coneCacheEntryIsAnInput();
     void meshReferencesStayInside_data();
     void meshReferencesStayInside();
     void meshClaimsBeyondTheFile_data();
@@ -140,6 +142,12 @@ void FaultReachTest::initTestCase() {
                                      "vt 0 1\nf 1/1 2/2 3/3\n");
     write(m_dir + "/meshes/tri.mtl", "newmtl m\nmap_Kd tri_albedo.png\n");
     write(m_dir + "/secret.txt", "outside the mesh's folder\n");
+    px::Image sky(16, 8, 3); // an environment, twice as wide as high
+    for (float& v : sky.pixels)
+        v = 0.25f;
+    px::ImageWriteOptions skyOptions;
+    skyOptions.format = px::PixelFormat::Float;
+    QVERIFY(px::writeImage((m_dir + "/sky.exr").toStdString(), sky, skyOptions).ok());
     cli({"render", "--height", "h.png", "--mesh", "meshes/tri.gltf", "--size", "16", "--out",
          "sub/control-gltf.png"});
     cli({"render", "--height", "h.png", "--mesh", "meshes/tri.obj", "--size", "16", "--out",
@@ -189,6 +197,11 @@ void FaultReachTest::inputReachedAnotherWay_data() {
                        "--size", "16",         "--out",  "t.png"}
         << "t-001.png"
         << "frame 1 of --turntable[^\\n]*the albedo map of t.json";
+    QTest::newRow("render: the environment map")
+        << QStringList{"render", "--height", "h.png", "--environment", "sky.exr",
+                       "--size", "16",       "--out", "./sub/../sky.exr"}
+        << "sky.exr"
+        << "--out names the same file as --environment sky.exr";
     QTest::newRow("import --force: an image of the set")
         << QStringList{"import", "set", "--out", "set/stone_albedo.png", "--force"}
         << "stone_albedo.png"
@@ -411,6 +424,24 @@ void FaultReachTest::fifoInTheConeCacheDoesNotHang() {
     QVERIFY2(run.seconds < 60.0, qPrintable(QString::number(run.seconds)));
     QCOMPARE(difference(before, snapshot(cache)), QString());
     record(run, true, false, 0);
+}
+
+// A cone map the cache holds is read like any other input: an output naming it is refused, and
+// the entry stays as it was.
+void FaultReachTest::coneCacheEntryIsAnInput() {
+    const QString cache = m_dir + "/cones";
+    QDir(cache).removeRecursively();
+    const QStringList recommend = {"recommend",   "--height", "h.png", "--cache", "cones",
+                                   "--max-polar", "60",       "--techniques", "cone"};
+    QCOMPARE(runCli(m_dir, recommend).status, 0);
+    const QStringList baked = QDir(cache).entryList({"cone-*.pxcone"});
+    QCOMPARE(baked.size(), 1);
+    const QString entry = "cones/" + baked.front();
+    const QStringList args = recommend + QStringList{"--out", entry};
+    PX_EXPECT_CLEAN_FAILURE(m_dir, args, {}, 1, entry,
+                            "--out names the same file as [^\\n]*\\(a cached cone map\\), which "
+                            "this run reads: refusing to overwrite an input");
+    QDir(cache).removeRecursively();
 }
 
 void FaultReachTest::meshReferencesStayInside_data() {

@@ -91,24 +91,27 @@ fs::path coneCachePath(const fs::path& dir, const ConeCacheKey& key) {
     return dir / name;
 }
 
-std::optional<ConeMap> readCachedCone(const fs::path& dir, const ConeCacheKey& key) {
+Result<std::optional<ConeMap>> readCachedCone(const fs::path& dir, const ConeCacheKey& key) {
     const fs::path path = coneCachePath(dir, key);
     // Opened without blocking (a FIFO in the cache must not hang the run), recorded as an input
     // only once its content is used: a damaged file is replaced by the next write.
     Result<InputFile> in = InputFile::open(path.string(), "a cached cone map", false);
     if (!in || key.width <= 0 || key.height <= 0)
-        return std::nullopt;
+        return std::optional<ConeMap>();
     Header found{};
     const Header wanted = headerFor(key);
     ConeMap map(key.kind, key.width, key.height);
     const std::size_t bytes = map.sqrtRatio.size() * sizeof(float);
     if (in->size() != sizeof found + bytes || !in->readAt(0, &found, sizeof found) ||
         !sameKey(found, wanted) || !in->readAt(sizeof found, map.sqrtRatio.data(), bytes) ||
-        fnv1a(map.sqrtRatio.data(), bytes) != found.payload || !in->record("a cached cone map"))
-        return std::nullopt;
+        fnv1a(map.sqrtRatio.data(), bytes) != found.payload)
+        return std::optional<ConeMap>();
+    // A good entry is an input like any other: an output of this run naming it is refused.
+    if (Status s = in->record("a cached cone map"); !s)
+        return s.error();
     std::error_code ec;
     fs::last_write_time(path, fs::file_time_type::clock::now(), ec); // its last use, for trim
-    return map;
+    return std::optional<ConeMap>(std::move(map));
 }
 
 Status writeCachedCone(const fs::path& dir, const ConeCacheKey& key, const ConeMap& map,
