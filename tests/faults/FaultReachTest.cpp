@@ -94,6 +94,7 @@ private slots:
     void specialFileAsInput();
     void fifoInTheConeCacheDoesNotHang();
     void coneCacheEntryIsAnInput();
+    void shaderDumpAllTakesNoMaterial();
     void meshReferencesStayInside_data();
     void meshReferencesStayInside();
     void meshClaimsBeyondTheFile_data();
@@ -442,6 +443,19 @@ void FaultReachTest::coneCacheEntryIsAnInput() {
                             "--out names the same file as [^\\n]*\\(a cached cone map\\), which "
                             "this run reads: refusing to overwrite an input");
     QDir(cache).removeRecursively();
+}
+
+// shader --dump-all writes every variant, whatever a material says, into a folder: a material
+// beside it (whose maps could bear a variant's name) is a usage error, before anything is written.
+void FaultReachTest::shaderDumpAllTakesNoMaterial() {
+    write(m_dir + "/pom.frag", "the artist's own shader\n");
+    write(m_dir + "/v.json", R"({"format": "parallax-studio-material", "version": 1,
+ "maps": {"height": "h.png", "albedo": "pom.frag"}, "technique": {"name": "pom"}})");
+    const QStringList args = {"shader", "--material", "v.json", "--dump-all", "."};
+    PX_EXPECT_CLEAN_FAILURE(m_dir, args, {}, 2, "--material",
+                            "--(material|dump-all) excludes --(dump-all|material)");
+    QFile::remove(m_dir + "/pom.frag");
+    QFile::remove(m_dir + "/v.json");
 }
 
 void FaultReachTest::meshReferencesStayInside_data() {
