@@ -27,6 +27,7 @@ private slots:
     void killedRunsDebrisRemovedByTheNext_data();
     void killedRunsDebrisRemovedByTheNext();
     void ctrlCFromOutsideStopsAtOnce();
+    void interruptDuringTheFramesFinishesThem_data();
     void interruptDuringTheFramesFinishesThem();
     void secondWriterRefused_data();
     void secondWriterRefused();
@@ -237,15 +238,26 @@ void FaultSignalTest::ctrlCFromOutsideStopsAtOnce() {
     record(run, true, false, 0);
 }
 
-// Ctrl-C while the frames move into place waits for the last one: the folder holds the whole new
-// set, exactly what an uninterrupted run writes, and nothing hidden.
+void FaultSignalTest::interruptDuringTheFramesFinishesThem_data() {
+    QTest::addColumn<QString>("signal");
+    QTest::addColumn<QString>("said");
+    QTest::newRow("SIGINT") << "INT" << "interrupted \\(SIGINT\\)";
+    QTest::newRow("SIGTERM") << "TERM" << "terminated \\(SIGTERM\\)";
+}
+
+// Ctrl-C or SIGTERM while the frames move into place waits for the last one: the folder holds the
+// whole new set, exactly what an uninterrupted run writes, and nothing hidden.
 void FaultSignalTest::interruptDuringTheFramesFinishesThem() {
+    QFETCH(QString, signal);
+    QFETCH(QString, said);
     const QString folder = m_temp.path() + "/frames";
     prepare(folder);
     const QStringList args = {"render", "--height", "h.png", "--turntable", "3",
                               "--size", "16",       "--out", "spin.png"};
-    const CliRun run = runCli(folder, args, {"PX_TEST_RAISE=INT:frames-update"});
+    const CliRun run = runCli(folder, args, {"PX_TEST_RAISE=" + signal + ":frames-update"});
     QVERIFY2(run.status == 130, qPrintable(run.output));
+    QVERIFY2(run.output.contains(QRegularExpression(said + ": stopped, temporary files removed")),
+             qPrintable(run.output));
     const QString clean = m_temp.path() + "/frames-clean";
     prepare(clean);
     QCOMPARE(runCli(clean, args).status, 0);
