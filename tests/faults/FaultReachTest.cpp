@@ -23,12 +23,6 @@ namespace {
 
 constexpr long long kMeshMemory = 768ll << 20;
 
-void write(const QString& path, const QByteArray& bytes) {
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
-    file.write(bytes);
-}
-
 QByteArray little32(quint32 v) {
     QByteArray b(4, '\0');
     for (int i = 0; i < 4; ++i)
@@ -122,27 +116,29 @@ void FaultReachTest::initTestCase() {
     QVERIFY(::link(QString(m_dir + "/h.png").toLocal8Bit(),
                    QString(m_dir + "/hard.png").toLocal8Bit()) == 0);
     // A material naming a height, an albedo and a cone map (pom does not load the cone map).
-    write(m_dir + "/m.json", R"({"format": "parallax-studio-material", "version": 1, "name": "m",
+    writeFile(m_dir + "/m.json",
+              R"({"format": "parallax-studio-material", "version": 1, "name": "m",
  "maps": {"height": "h.png", "albedo": "a.png", "cone": "c.png"}, "technique": {"name": "pom"}})");
-    write(m_dir + "/sub/m2.json", R"({"format": "parallax-studio-material", "version": 1,
+    writeFile(m_dir + "/sub/m2.json", R"({"format": "parallax-studio-material", "version": 1,
  "maps": {"height": "../h.png"}, "technique": {"name": "pom"}})");
-    write(m_dir + "/t.json", R"({"format": "parallax-studio-material", "version": 1,
+    writeFile(m_dir + "/t.json", R"({"format": "parallax-studio-material", "version": 1,
  "maps": {"height": "h.png", "albedo": "t-001.png"}})");
     // A texture set folder.
     QDir().mkpath(m_dir + "/set");
     QVERIFY(QFile::copy(m_dir + "/h.png", m_dir + "/set/stone_height.png"));
     QVERIFY(QFile::copy(m_dir + "/a.png", m_dir + "/set/stone_albedo.png"));
-    write(m_dir + "/set/notes.txt", "the artist's notes\n");
+    writeFile(m_dir + "/set/notes.txt", "the artist's notes\n");
     QVERIFY(QFile::copy(m_dir + "/a.png", m_dir + "/set/stone_preview.jpg")); // not a map
     // Meshes: a triangle with its buffer, its image, a material library and its texture.
-    write(m_dir + "/meshes/tri.bin", triangleBuffer());
-    write(m_dir + "/meshes/tri.gltf",
-          triangleGltf("tri.bin", R"(, "images": [{"uri": "tri_albedo.png"}])"));
+    writeFile(m_dir + "/meshes/tri.bin", triangleBuffer());
+    writeFile(m_dir + "/meshes/tri.gltf",
+              triangleGltf("tri.bin", R"(, "images": [{"uri": "tri_albedo.png"}])"));
     QVERIFY(QFile::copy(m_dir + "/a.png", m_dir + "/meshes/tri_albedo.png"));
-    write(m_dir + "/meshes/tri.obj", "mtllib tri.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\n"
-                                     "vt 0 1\nf 1/1 2/2 3/3\n");
-    write(m_dir + "/meshes/tri.mtl", "newmtl m\nmap_Kd tri_albedo.png\n");
-    write(m_dir + "/secret.txt", "outside the mesh's folder\n");
+    writeFile(m_dir + "/meshes/tri.obj",
+              "mtllib tri.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\n"
+              "vt 0 1\nf 1/1 2/2 3/3\n");
+    writeFile(m_dir + "/meshes/tri.mtl", "newmtl m\nmap_Kd tri_albedo.png\n");
+    writeFile(m_dir + "/secret.txt", "outside the mesh's folder\n");
     px::Image sky(16, 8, 3); // an environment, twice as wide as high
     for (float& v : sky.pixels)
         v = 0.25f;
@@ -199,7 +195,7 @@ void FaultReachTest::inputReachedAnotherWay_data() {
         << "t-001.png"
         << "frame 1 of --turntable[^\\n]*the albedo map of t.json";
     QTest::newRow("render: the environment map")
-        << QStringList{"render", "--height", "h.png", "--environment", "sky.exr",
+        << QStringList{"render", "--height", "h.png", "--environment",   "sky.exr",
                        "--size", "16",       "--out", "./sub/../sky.exr"}
         << "sky.exr"
         << "--out names the same file as --environment sky.exr";
@@ -347,7 +343,7 @@ void FaultReachTest::deviceAsOutput() {
 // a link (never silently turned into a copy), nothing is left beside either.
 void FaultReachTest::linkedOutputWrittenThrough() {
     QDir().mkpath(m_dir + "/shared");
-    write(m_dir + "/shared/out.png", "the previous picture");
+    writeFile(m_dir + "/shared/out.png", "the previous picture");
     QVERIFY(QFile::link("shared/out.png", m_dir + "/linked.png"));
     const auto before = snapshot(m_dir);
     const CliRun run = runCli(m_dir, {"sample", "noise", "--size", "16", "--out", "linked.png"});
@@ -394,9 +390,9 @@ void FaultReachTest::specialFileAsInput() {
     for (const char* name :
          {"pipe.png", "pipe.json", "pipe.obj", "pipe.hdr", "pipe.csv", "meshes/pipe.bin"})
         QVERIFY(::mkfifo(QString(m_dir + "/" + name).toLocal8Bit().constData(), 0644) == 0);
-    write(m_dir + "/piped.json", R"({"format": "parallax-studio-material", "version": 1,
+    writeFile(m_dir + "/piped.json", R"({"format": "parallax-studio-material", "version": 1,
  "maps": {"height": "pipe.png"}})");
-    write(m_dir + "/meshes/piped.gltf", triangleGltf("pipe.bin"));
+    writeFile(m_dir + "/meshes/piped.gltf", triangleGltf("pipe.bin"));
     PX_EXPECT_CLEAN_FAILURE(m_dir, args, {}, 1, file,
                             "is a FIFO \\(named pipe\\), not a regular file; only regular files");
     for (const char* name : {"pipe.png", "pipe.json", "pipe.obj", "pipe.hdr", "pipe.csv",
@@ -432,7 +428,7 @@ void FaultReachTest::fifoInTheConeCacheDoesNotHang() {
 void FaultReachTest::coneCacheEntryIsAnInput() {
     const QString cache = m_dir + "/cones";
     QDir(cache).removeRecursively();
-    const QStringList recommend = {"recommend",   "--height", "h.png", "--cache", "cones",
+    const QStringList recommend = {"recommend",   "--height", "h.png",        "--cache", "cones",
                                    "--max-polar", "60",       "--techniques", "cone"};
     QCOMPARE(runCli(m_dir, recommend).status, 0);
     const QStringList baked = QDir(cache).entryList({"cone-*.pxcone"});
@@ -448,8 +444,8 @@ void FaultReachTest::coneCacheEntryIsAnInput() {
 // shader --dump-all writes every variant, whatever a material says, into a folder: a material
 // beside it (whose maps could bear a variant's name) is a usage error, before anything is written.
 void FaultReachTest::shaderDumpAllTakesNoMaterial() {
-    write(m_dir + "/pom.frag", "the artist's own shader\n");
-    write(m_dir + "/v.json", R"({"format": "parallax-studio-material", "version": 1,
+    writeFile(m_dir + "/pom.frag", "the artist's own shader\n");
+    writeFile(m_dir + "/v.json", R"({"format": "parallax-studio-material", "version": 1,
  "maps": {"height": "h.png", "albedo": "pom.frag"}, "technique": {"name": "pom"}})");
     const QStringList args = {"shader", "--material", "v.json", "--dump-all", "."};
     PX_EXPECT_CLEAN_FAILURE(m_dir, args, {}, 2, "--material",
@@ -490,12 +486,12 @@ void FaultReachTest::meshReferencesStayInside() {
     const QString folder = m_dir + "/meshes";
     QVERIFY(QFile::link(m_temp.path() + "/outside", folder + "/escape"));
     QDir().mkpath(m_temp.path() + "/outside");
-    write(m_temp.path() + "/outside/secret.txt", triangleBuffer());
-    write(m_dir + "/outside.mtl", "newmtl m\n");
-    write(folder + "/inner/lib.mtl", "newmtl m\nmap_Kd ../../secret.txt\n");
+    writeFile(m_temp.path() + "/outside/secret.txt", triangleBuffer());
+    writeFile(m_dir + "/outside.mtl", "newmtl m\n");
+    writeFile(folder + "/inner/lib.mtl", "newmtl m\nmap_Kd ../../secret.txt\n");
     const bool obj = gltf.startsWith("obj:");
     const QString name = obj ? "probe.obj" : "probe.gltf";
-    write(folder + "/" + name, obj ? gltf.mid(4).toUtf8() : gltf.toUtf8());
+    writeFile(folder + "/" + name, obj ? gltf.mid(4).toUtf8() : gltf.toUtf8());
     PX_EXPECT_CLEAN_FAILURE(m_dir,
                             (QStringList{"render", "--height", "h.png", "--mesh", "meshes/" + name,
                                          "--size", "16", "--out", "r.png"}),
@@ -548,10 +544,10 @@ void FaultReachTest::meshClaimsBeyondTheFile() {
     QFETCH(QByteArray, buffer);
     QFETCH(QString, reason);
     const QString folder = m_dir + "/meshes";
-    write(folder + "/" + name, bytes);
+    writeFile(folder + "/" + name, bytes);
     const QString bin = QFileInfo(name).completeBaseName() + ".bin";
     if (!buffer.isEmpty())
-        write(folder + "/" + bin, buffer);
+        writeFile(folder + "/" + bin, buffer);
     const QStringList args = {
         "render", "--height", "h.png", "--mesh", "meshes/" + name, "--max-triangles",
         "1000",   "--size",   "16",    "--out",  "r.png"};

@@ -241,8 +241,10 @@ void FaultSignalTest::ctrlCFromOutsideStopsAtOnce() {
 void FaultSignalTest::interruptDuringTheFramesFinishesThem_data() {
     QTest::addColumn<QString>("signal");
     QTest::addColumn<QString>("said");
-    QTest::newRow("SIGINT") << "INT" << "interrupted \\(SIGINT\\)";
-    QTest::newRow("SIGTERM") << "TERM" << "terminated \\(SIGTERM\\)";
+    QTest::newRow("SIGINT") << "INT"
+                            << "interrupted \\(SIGINT\\)";
+    QTest::newRow("SIGTERM") << "TERM"
+                             << "terminated \\(SIGTERM\\)";
 }
 
 // Ctrl-C or SIGTERM while the frames move into place waits for the last one: the folder holds the

@@ -6,6 +6,7 @@
 #include <QFile>
 #include <QProcess>
 #include <QProcessEnvironment>
+#include <QTest>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -45,6 +46,12 @@ CliRun runCli(const QString& folder, const QStringList& arguments, const QString
         run.status = process.exitCode();
     }
     return run;
+}
+
+void writeFile(const QString& path, const QByteArray& bytes) {
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    QCOMPARE(file.write(bytes), bytes.size());
 }
 
 QMap<QString, QByteArray> snapshot(const QString& folder) {

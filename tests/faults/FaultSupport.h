@@ -21,6 +21,9 @@ struct CliRun {
 CliRun runCli(const QString& folder, const QStringList& arguments,
               const QStringList& environment = {}, long long addressSpace = 0);
 
+// Writes `bytes` to `path` (a test's input file), replacing it.
+void writeFile(const QString& path, const QByteArray& bytes);
+
 // Every file and folder under `folder` (hidden ones included), with the bytes of each file (a
 // symbolic link: its target; a FIFO, socket or device: its kind).
 QMap<QString, QByteArray> snapshot(const QString& folder);

@@ -13,16 +13,6 @@
 
 using namespace px::faults;
 
-namespace {
-
-void write(const QString& path, const QByteArray& bytes) {
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
-    file.write(bytes);
-}
-
-} // namespace
-
 class FaultValuesTest : public QObject {
     Q_OBJECT
 
@@ -55,7 +45,7 @@ void FaultValuesTest::initTestCase() {
         options.format = px::PixelFormat::Float;
         QVERIFY(px::writeImage((m_dir + "/" + name).toStdString(), image, options).ok());
     }
-    write(m_dir + "/huge.json", R"({"format": "parallax-studio-material", "version": 1,
+    writeFile(m_dir + "/huge.json", R"({"format": "parallax-studio-material", "version": 1,
  "maps": {"height": "h.png", "albedo": "huge.exr"}})");
 }
 
@@ -88,7 +78,7 @@ void FaultValuesTest::hugeFloatTexelRefused() {
 }
 
 void FaultValuesTest::duplicateJsonKeyRefused() {
-    write(m_dir + "/dup.json", R"({"format": "parallax-studio-material", "version": 1,
+    writeFile(m_dir + "/dup.json", R"({"format": "parallax-studio-material", "version": 1,
  "maps": {"height": "h.png"}, "technique": {"name": "pom", "name": "exact"}})");
     PX_EXPECT_CLEAN_FAILURE(
         m_dir, (QStringList{"render", "--material", "dup.json", "--size", "16", "--out", "r.png"}),
