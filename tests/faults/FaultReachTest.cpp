@@ -89,6 +89,8 @@ private slots:
     void fifoInTheConeCacheDoesNotHang();
     void coneCacheEntryIsAnInput();
     void shaderDumpAllTakesNoMaterial();
+    void userFileNamedLikeALockKept_data();
+    void userFileNamedLikeALockKept();
     void meshReferencesStayInside_data();
     void meshReferencesStayInside();
     void meshClaimsBeyondTheFile_data();
@@ -452,6 +454,31 @@ void FaultReachTest::shaderDumpAllTakesNoMaterial() {
                             "--(material|dump-all) excludes --(dump-all|material)");
     QFile::remove(m_dir + "/pom.frag");
     QFile::remove(m_dir + "/v.json");
+}
+
+void FaultReachTest::userFileNamedLikeALockKept_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("lock");
+    QTest::addColumn<QByteArray>("bytes");
+    QTest::newRow("export, notes")
+        << QStringList{"export", "--height", "h.png", "--format", "gltf", "--out", "lockpkg"}
+        << ".lockpkg.lock" << QByteArray("the artist's notes\n");
+    QTest::newRow("turntable, digits but no newline")
+        << QStringList{"render", "--height", "h.png", "--turntable", "2",
+                       "--size", "16",       "--out", "lspin.png"}
+        << ".lspin-000.png.lock" << QByteArray("20261126");
+}
+
+// A writer's lock (.NAME.lock) is the project's own file only when it holds what a writer puts
+// there (a pid); a user's file of that name is refused, never truncated or removed.
+void FaultReachTest::userFileNamedLikeALockKept() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, lock);
+    QFETCH(QByteArray, bytes);
+    writeFile(m_dir + "/" + lock, bytes);
+    PX_EXPECT_CLEAN_FAILURE(m_dir, args, {}, 1, lock,
+                            "is a file that Parallax Studio did not write; refusing to replace it");
+    QFile::remove(m_dir + "/" + lock);
 }
 
 void FaultReachTest::meshReferencesStayInside_data() {

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <fcntl.h>
 #include <string>
+#include <string_view>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -26,6 +27,21 @@ std::string holderOf(int fd) {
     while (!holder.empty() && (holder.back() == '\n' || holder.back() == ' '))
         holder.pop_back();
     return holder.empty() ? std::string("another process") : "process " + holder;
+}
+
+// A lock file is ours only when it holds what a holder writes: its pid and a newline, or nothing
+// (a holder killed before writing it). Anything else is someone's file that happens to bear the
+// name: it is neither truncated nor removed.
+bool holdsALockOfOurs(int fd, const struct stat& st) {
+    if (st.st_size == 0)
+        return true;
+    char text[16] = {};
+    if (st.st_size > static_cast<off_t>(sizeof text) ||
+        ::pread(fd, text, sizeof text, 0) != st.st_size)
+        return false;
+    const std::string_view pid(text, static_cast<std::size_t>(st.st_size) - 1);
+    return text[st.st_size - 1] == '\n' && !pid.empty() &&
+           pid.find_first_not_of("0123456789") == std::string_view::npos;
 }
 
 } // namespace
@@ -63,11 +79,19 @@ Result<OutputLock> OutputLock::take(const fs::path& requested) {
             ::close(fd);
             continue;
         }
+        const FileIdentity id{static_cast<std::uint64_t>(held.st_dev),
+                              static_cast<std::uint64_t>(held.st_ino)};
+        if (!holdsALockOfOurs(fd, now) || inputWithIdentity(id)) {
+            ::close(fd);
+            return fileError(target.string(),
+                             "the writer's lock " + path.string() +
+                                 " is a file that Parallax Studio did not write; refusing to "
+                                 "replace it (rename it, or choose another output)");
+        }
         const std::string pid = std::to_string(::getpid()) + "\n";
         if (::ftruncate(fd, 0) == 0) [[maybe_unused]]
             const ssize_t n = ::pwrite(fd, pid.data(), pid.size(), 0);
-        noteCreated(
-            {static_cast<std::uint64_t>(held.st_dev), static_cast<std::uint64_t>(held.st_ino)});
+        noteCreated(id);
         OutputLock lock;
         lock.m_path = path;
         lock.m_fd = fd;

@@ -204,6 +204,16 @@ void StagedSetTest::oneWriterAtATime() {
     QVERIFY(writeFileAtomically(path(".out.lock"), "12345\n").ok());
     { QVERIFY(OutputLock::take(path("out")).ok()); }
     QVERIFY(!fs::exists(path(".out.lock")));
+    // Someone's file that bears the name is not a lock: refused, kept byte for byte.
+    for (const std::string mine : {"notes\n", "12345", "12 34\n", "123456789012345678\n"}) {
+        QVERIFY(writeFileAtomically(path(".out.lock"), mine).ok());
+        const Result<OutputLock> taken = OutputLock::take(path("out"));
+        QVERIFY2(!taken.ok(), mine.c_str());
+        QVERIFY2(taken.error().message.find("is a file that Parallax Studio did not write") !=
+                     std::string::npos,
+                 taken.error().message.c_str());
+        QCOMPARE(read(".out.lock"), mine);
+    }
 }
 
 QTEST_GUILESS_MAIN(StagedSetTest)
