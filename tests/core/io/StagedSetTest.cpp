@@ -125,6 +125,7 @@ void StagedSetTest::killedHalfWayIsFinishedByTheNextRun() {
     };
     QVERIFY(writeImageSet(files, frame(0.0f), {}).ok());
     std::vector<std::string> old;
+    old.reserve(files.size());
     for (const std::string& f : files)
         old.push_back(readTextFile(f, false).value());
     const pid_t child = ::fork();
