@@ -2,6 +2,7 @@
 
 #include "Interrupt.h"
 #include "parallax/Version.h"
+#include "parallax/io/Inputs.h"
 #include "parallax/io/OutputCheck.h"
 
 #include <filesystem>
@@ -21,7 +22,9 @@ bool namesOutputFile(const CLI::App& command, const std::string& option) {
     return option == "--out" || option == "--plot" || option == "--csv";
 }
 
-// Refuses, before any work, an output that would overwrite an input or cannot be written.
+// Refuses, before any work, an output that would overwrite an input or cannot be written; then
+// records the command line's files: inputs (Inputs.h), and outputs that no file the run reads
+// later (a material's maps, a mesh's buffers) may be.
 Status checkFileOptions(const CLI::App& command) {
     std::vector<NamedPath> outputs, inputs;
     for (const CLI::Option* option : command.get_options()) {
@@ -34,7 +37,41 @@ Status checkFileOptions(const CLI::App& command) {
                 inputs.push_back({name, value});
         }
     }
-    return checkOutputs(outputs, inputs);
+    if (Status s = checkOutputs(outputs, inputs); !s)
+        return s;
+    for (const NamedPath& in : inputs) {
+        if (Status s = noteInput(in.path, in.option); !s)
+            return s;
+    }
+    for (const NamedPath& out : outputs) {
+        if (Status s = planOutput(out.path, out.option); !s)
+            return s;
+    }
+    return success();
+}
+
+// CLI11 reads integers with strtol's base 0, so "--seed 010" would be 8 and "0x10" 16: numbers
+// are decimal here, leading zeros and all.
+void decimalIntegers(CLI::App& app) {
+    for (CLI::App* command : app.get_subcommands({})) {
+        for (CLI::Option* option : command->get_options()) {
+            const std::string type = option->get_type_name();
+            if (!type.starts_with("INT") && !type.starts_with("UINT"))
+                continue;
+            option->transform(CLI::Validator(
+                [](std::string& value) -> std::string {
+                    const std::size_t sign = value.starts_with('-') || value.starts_with('+');
+                    const std::size_t first = value.find_first_not_of('0', sign);
+                    if (first == sign || first == std::string::npos)
+                        return {}; // no leading zero (or "0")
+                    if (value.find_first_not_of("0123456789", sign) != std::string::npos)
+                        return "\"" + value + "\" is not a decimal integer";
+                    value.erase(sign, first - sign);
+                    return {};
+                },
+                "", "decimal"));
+        }
+    }
 }
 
 } // namespace
@@ -72,6 +109,7 @@ int run(int argc, char** argv) {
     add(addBakeCommand);
     add(addRecommendCommand);
     add(addImportCommand);
+    decimalIntegers(app);
 
     try {
         app.parse(argc, argv);
@@ -85,6 +123,7 @@ int run(int argc, char** argv) {
     for (const Entry& entry : entries) {
         if (!entry.command->parsed())
             continue;
+        const InputSession session; // the run's record of what it reads
         if (Status s = checkFileOptions(*entry.command); !s)
             return fail(s.error().message);
         try {

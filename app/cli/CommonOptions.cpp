@@ -116,11 +116,13 @@ std::string ConeCacheOptions::folder() const {
         return {};
     if (!value.empty())
         return value;
+    // The XDG base directory spec: a relative path in XDG_CACHE_HOME is invalid and ignored (it
+    // would make a cache folder wherever the command runs); so is a relative HOME.
     const char* xdg = std::getenv("XDG_CACHE_HOME");
     const char* home = std::getenv("HOME");
-    if (xdg && *xdg)
+    if (xdg && *xdg == '/')
         return std::string(xdg) + "/parallax-studio/cone-maps";
-    if (home && *home)
+    if (home && *home == '/')
         return std::string(home) + "/.cache/parallax-studio/cone-maps";
     return {};
 }

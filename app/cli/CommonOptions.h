@@ -61,8 +61,9 @@ struct ConeCacheOptions {
 
     // Adds --cache DIR|off.
     void addTo(CLI::App& command);
-    // The folder: $XDG_CACHE_HOME/parallax-studio/cone-maps, else ~/.cache/..., by default;
-    // empty for "off", or when neither variable is set.
+    // The folder: $XDG_CACHE_HOME/parallax-studio/cone-maps, else ~/.cache/..., by default (a
+    // relative XDG_CACHE_HOME is ignored, as the XDG spec says); empty for "off", or when neither
+    // variable is set to an absolute path.
     std::string folder() const;
 };
 

@@ -3,6 +3,8 @@
 
 #include "Cli.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/io/Inputs.h"
+#include "parallax/material/MapKind.h"
 #include "parallax/material/MapPaths.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/TextureSetImport.h"
@@ -50,6 +52,14 @@ int runImport(const ImportOptions& o) {
     Result<std::vector<std::string>> files = inputFiles(o);
     if (!files)
         return fail(files.error().message);
+    // The set's images, read or not, are inputs: none may be written over. (Other files, such as
+    // an earlier import's material file, may be replaced with --force.)
+    for (const std::string& file : *files) {
+        if (!isImageFileName(file))
+            continue;
+        if (Status s = noteInput(file, "an image of the texture set"); !s)
+            return fail(s.error().message);
+    }
     const std::string source = o.inputs.size() == 1 ? o.inputs.front() : "the files";
     Result<TextureSetPlan> plan = planTextureSet(*files, source, o.set);
     if (!plan) {

@@ -5,6 +5,7 @@
 #include "parallax/eval/AutoTechnique.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/image/ImageSet.h"
+#include "parallax/io/Inputs.h"
 #include "parallax/light/Environment.h"
 #include "parallax/light/EnvironmentLighting.h"
 #include "parallax/material/MaterialFile.h"
@@ -47,6 +48,7 @@ struct RenderOptions {
     std::string mesh = "plane";
     std::optional<int> uvSet;
     std::size_t maxTriangles = kDefaultMaxMeshTriangles;
+    std::string meshRoot; // where the mesh's references may lie (default: its folder)
     bool derivativeTbn = false;
     std::string size = "512x512";
     std::string light = "135,40";
@@ -187,7 +189,7 @@ Result<Material> materialFrom(const RenderOptions& o, MaterialAssets& assets) {
         return field.error();
     assets.height = std::move(*field);
     if (!o.albedo.empty()) {
-        Result<Image> albedo = readImage(o.albedo);
+        Result<Image> albedo = readImage(o.albedo, colourMapReading());
         if (!albedo)
             return albedo.error();
         assets.albedo = std::move(*albedo);
@@ -245,6 +247,7 @@ int runRender(const RenderOptions& o) {
         MeshLoadOptions load;
         load.uvSet = o.uvSet.value_or(0);
         load.maxTriangles = o.maxTriangles;
+        load.root = o.meshRoot;
         Result<LoadedMesh> mesh = loadMesh(o.mesh, load);
         if (!mesh)
             return fail(mesh.error().message);
@@ -271,6 +274,14 @@ int runRender(const RenderOptions& o) {
             fileError(o.out, "cannot hold an 8-bit image (use .png, .tif, .jpg, .bmp or .tga)")
                 .message);
 
+    // A turntable's frames are outputs too: no file the run reads (a map of the material) may be
+    // one of them, which is refused as soon as it is met.
+    const std::vector<std::string> frames =
+        o.turntable > 0 ? numberedFiles(o.out, o.turntable) : std::vector<std::string>{};
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        if (Status s = planOutput(frames[i], "frame " + std::to_string(i) + " of --turntable"); !s)
+            return fail(s.error().message);
+    }
     MaterialAssets assets;
     Result<Material> material = materialFrom(o, assets);
     if (!material)
@@ -311,7 +322,6 @@ int runRender(const RenderOptions& o) {
     if (o.turntable > 0) {
         // The camera orbits once, the light and environment stay: OUT-000.png, OUT-001.png, ...
         // written as one set (ImageSet.h): a failure leaves the previous frames as they were.
-        const std::vector<std::string> frames = numberedFiles(o.out, o.turntable);
         const Status written = writeImageSet(
             frames,
             [&](int i) {
@@ -416,6 +426,10 @@ Action addRenderCommand(CLI::App& app) {
             "MESH"));
     cmd->add_option("--uv-set", o->uvSet, "The mesh file's uv set the material uses (default 0)")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--mesh-root", o->meshRoot,
+                    "Folder the mesh file's buffers, images and material libraries must lie "
+                    "under (default: the mesh's own folder)")
+        ->check(CLI::ExistingDirectory);
     cmd->add_option("--max-triangles", o->maxTriangles,
                     "Refuse mesh files with more triangles (default 2000000)")
         ->check(CLI::PositiveNumber);

@@ -161,9 +161,12 @@ Action addShaderCommand(CLI::App& app) {
         ->check(CLI::IsMember({"fragment", "vertex"}));
     cmd->add_option("--out", o->out, "Output file (.frag/.vert); - for standard output");
     cmd->add_flag("--list", o->list, "List every variant's name");
+    // Every variant, whatever a material says: a --material beside it would be read for nothing
+    // and its maps, never recorded as inputs, could be among the files written.
     cmd->add_option("--dump-all", o->dumpAll,
                     "Write every variant's fragment stage and each distinct vertex stage into "
-                    "this folder");
+                    "this folder")
+        ->excludes(material);
     return [o] { return runShader(*o); };
 }
 

@@ -7,6 +7,7 @@
 #include "WorkPrecisionPlot.h"
 
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/OutputGate.h"
 #include "parallax/io/Temporaries.h"
 
 #include <algorithm>
@@ -277,13 +278,12 @@ Status writeWorkPrecisionPlot(const std::string& path, const WorkPrecisionChart&
 
     // PLplot does not report a full disk: a complete SVG ends with its closing tag. The checked
     // writer then writes it for good (every step checked, as every other output).
-    Result<std::string> svg = readTextFile(temp.string());
+    Result<std::string> svg = readTextFile(temp.string(), false); // our own file, not an input
     const std::string end = "</svg>";
     const bool complete =
         svg && svg->find(end, svg->size() > 64 ? svg->size() - 64 : 0) != std::string::npos;
     const std::string reason = complete ? std::string() : whyUnwritable(temp);
-    std::error_code ec;
-    std::filesystem::remove(temp, ec);
+    discardTemporary(temp);
     if (!complete)
         return fileError(path, "writing failed (" + reason +
                                    "); the previous file, if any, is unchanged");

@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <csignal>
+#include <sys/wait.h>
 
 using namespace px::faults;
 
@@ -26,6 +27,10 @@ private slots:
     void killedRunsDebrisRemovedByTheNext_data();
     void killedRunsDebrisRemovedByTheNext();
     void ctrlCFromOutsideStopsAtOnce();
+    void interruptDuringTheFramesFinishesThem_data();
+    void interruptDuringTheFramesFinishesThem();
+    void secondWriterRefused_data();
+    void secondWriterRefused();
 
 private:
     void prepare(const QString& folder);
@@ -40,7 +45,8 @@ void FaultSignalTest::prepare(const QString& folder) {
     QDir(folder).removeRecursively();
     QDir().mkpath(folder);
     QCOMPARE(runCli(folder, {"sample", "noise", "--size", "32", "--out", "h.png"}).status, 0);
-    for (const char* previous : {"out.png", "out.csv"}) {
+    for (const char* previous :
+         {"out.png", "out.csv", "spin-000.png", "spin-001.png", "spin-002.png"}) {
         QFile file(folder + "/" + previous);
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.write(QByteArray("the previous ") + previous + "\n");
@@ -65,12 +71,18 @@ void FaultSignalTest::interruptAtAMoment_data() {
         {"export", {"export", "--height", "h.png", "--format", "unity", "--out", "fresh"}},
         {"export --force",
          {"export", "--height", "h.png", "--format", "godot", "--out", "earlier", "--force"}},
+        {"render --turntable",
+         {"render", "--height", "h.png", "--turntable", "3", "--size", "16", "--out", "spin.png"}},
     };
     for (const auto& [name, args] : commands) {
-        for (const char* signal : {"INT", "TERM"}) {
-            for (const char* point : {"write", "commit", "export-commit"}) {
+        for (const char* signal : {"INT", "TERM", "HUP"}) {
+            for (const char* point : {"write", "commit", "export-commit", "frames-commit"}) {
                 if (QString(point) == "export-commit" && !name.startsWith("export"))
                     continue;
+                if (QString(point) == "frames-commit" && !name.startsWith("render"))
+                    continue;
+                if (QString(signal) == "HUP" && QString(point) != "write")
+                    continue; // the same handler as SIGINT's: one moment is enough
                 QTest::newRow(qPrintable(name + " SIG" + signal + " at " + point))
                     << args << QString(signal) << QString(point);
             }
@@ -84,7 +96,9 @@ void FaultSignalTest::interruptAtAMoment() {
     QFETCH(QString, point);
     const QString folder = m_temp.path() + "/moment";
     prepare(folder);
-    const QString said = signal == "INT" ? "interrupted \\(SIGINT\\)" : "terminated \\(SIGTERM\\)";
+    const QString said = signal == "INT"   ? "interrupted \\(SIGINT\\)"
+                         : signal == "HUP" ? "hung up \\(SIGHUP\\)"
+                                           : "terminated \\(SIGTERM\\)";
     PX_EXPECT_CLEAN_FAILURE(folder, args, {"PX_TEST_RAISE=" + signal + ":" + point}, 130,
                             "error:", said + ": stopped, temporary files removed");
 }
@@ -123,11 +137,27 @@ void FaultSignalTest::killedRunsDebrisRemovedByTheNext_data() {
     QTest::addColumn<QString>("debris");
     QTest::newRow("sample") << QStringList{"sample", "bricks", "--size", "64", "--out", "out.png"}
                             << "write"
-                            << "^\\.out\\.png\\.tmp[0-9]+-[0-9]+$";
+                            << "^\\.out\\.png\\.tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}$";
     QTest::newRow("export") << QStringList{"export", "--height", "h.png", "--format",
                                            "gltf",   "--out",    "fresh"}
                             << "export-commit"
-                            << "^\\.fresh\\.export-tmp[0-9]+-[0-9]+/$";
+                            << "^\\.fresh\\.export-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
+    QTest::newRow("export --force, half updated")
+        << QStringList{"export",   "--height", "h.png",   "--format", "godot",
+                       "--invert", "--out",    "earlier", "--force"}
+        << "export-update"
+        << "^\\.earlier\\.export-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
+    const QStringList spin = {"render", "--height", "h.png", "--turntable", "3",
+                              "--size", "16",       "--out", "spin.png"};
+    QTest::newRow("render --turntable, a frame half written")
+        << spin << "write"
+        << "^\\.spin-000\\.png\\.set-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
+    QTest::newRow("render --turntable, every frame staged")
+        << spin << "frames-commit"
+        << "^\\.spin-000\\.png\\.set-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
+    QTest::newRow("render --turntable, half the frames moved")
+        << spin << "frames-update"
+        << "^\\.spin-000\\.png\\.set-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
 }
 
 void FaultSignalTest::killedRunsDebrisRemovedByTheNext() {
@@ -145,13 +175,32 @@ void FaultSignalTest::killedRunsDebrisRemovedByTheNext() {
             left << name;
     }
     QVERIFY2(!left.filter(QRegularExpression(debris)).isEmpty(), qPrintable(left.join(' ')));
-    for (const QString& name : before.keys()) // the previous output is still whole
-        QCOMPARE(snapshot(folder).value(name), before.value(name));
+    // Before a commit is decided the previous output is whole; after (half the moves done), the
+    // journal in the stage lets the next run finish it.
+    if (!point.endsWith("-update")) {
+        for (const QString& name : before.keys())
+            QCOMPARE(snapshot(folder).value(name), before.value(name));
+    }
 
     const CliRun next = runCli(folder, args);
-    QCOMPARE(next.status, 0);
-    for (const QString& name : snapshot(folder).keys())
-        QVERIFY2(!name.contains(QRegularExpression(debris)), qPrintable("still there: " + name));
+    QVERIFY2(next.status == 0, qPrintable(next.output));
+    // Nothing hidden is left but what was there before: no stage, no temporary, no lock.
+    for (const QString& name : snapshot(folder).keys()) {
+        const QString base = name.section('/', -1, -1).isEmpty() ? name.section('/', -2, -2)
+                                                                 : name.section('/', -1, -1);
+        QVERIFY2(!base.startsWith('.') || before.contains(name) || base == ".parallax-export",
+                 qPrintable("left behind: " + name));
+    }
+    // And the output is what a clean run writes.
+    const QString clean = m_temp.path() + "/clean";
+    prepare(clean);
+    QCOMPARE(runCli(clean, args).status, 0);
+    const auto reference = snapshot(clean);
+    const auto result = snapshot(folder);
+    for (auto it = reference.begin(); it != reference.end(); ++it) {
+        if (!it.key().endsWith(".parallax-export") && !it.key().endsWith("h.png"))
+            QVERIFY2(result.value(it.key()) == it.value(), qPrintable("differs: " + it.key()));
+    }
     record(next, true, false, 0);
 }
 
@@ -187,6 +236,88 @@ void FaultSignalTest::ctrlCFromOutsideStopsAtOnce() {
     CliRun run;
     run.status = 130;
     record(run, true, false, 0);
+}
+
+void FaultSignalTest::interruptDuringTheFramesFinishesThem_data() {
+    QTest::addColumn<QString>("signal");
+    QTest::addColumn<QString>("said");
+    QTest::newRow("SIGINT") << "INT"
+                            << "interrupted \\(SIGINT\\)";
+    QTest::newRow("SIGTERM") << "TERM"
+                             << "terminated \\(SIGTERM\\)";
+}
+
+// Ctrl-C or SIGTERM while the frames move into place waits for the last one: the folder holds the
+// whole new set, exactly what an uninterrupted run writes, and nothing hidden.
+void FaultSignalTest::interruptDuringTheFramesFinishesThem() {
+    QFETCH(QString, signal);
+    QFETCH(QString, said);
+    const QString folder = m_temp.path() + "/frames";
+    prepare(folder);
+    const QStringList args = {"render", "--height", "h.png", "--turntable", "3",
+                              "--size", "16",       "--out", "spin.png"};
+    const CliRun run = runCli(folder, args, {"PX_TEST_RAISE=" + signal + ":frames-update"});
+    QVERIFY2(run.status == 130, qPrintable(run.output));
+    QVERIFY2(run.output.contains(QRegularExpression(said + ": stopped, temporary files removed")),
+             qPrintable(run.output));
+    const QString clean = m_temp.path() + "/frames-clean";
+    prepare(clean);
+    QCOMPARE(runCli(clean, args).status, 0);
+    const auto after = snapshot(folder), reference = snapshot(clean);
+    for (const char* frame : {"spin-000.png", "spin-001.png", "spin-002.png"})
+        QVERIFY2(after.value(frame) == reference.value(frame), frame);
+    for (const QString& name : after.keys())
+        QVERIFY2(!name.startsWith('.'), qPrintable("left behind: " + name));
+    record(run, true, false, 0);
+}
+
+void FaultSignalTest::secondWriterRefused_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("point");
+    QTest::addColumn<QString>("target");
+    QTest::newRow("export --force")
+        << QStringList{"export",   "--height", "h.png",   "--format", "godot",
+                       "--invert", "--out",    "earlier", "--force"}
+        << "export-commit"
+        << "earlier";
+    QTest::newRow("render --turntable")
+        << QStringList{"render", "--height", "h.png", "--turntable", "3",
+                       "--size", "16",       "--out", "spin.png"}
+        << "frames-commit"
+        << "spin-000.png";
+}
+
+// Two writers of one export folder (or one set of frames) at once: the second is refused at
+// once, naming the first, and changes nothing; the first then finishes. The first is stopped
+// (SIGSTOP, by the test hook) with everything staged, so the two overlap for certain.
+void FaultSignalTest::secondWriterRefused() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, point);
+    QFETCH(QString, target);
+    const QString folder = m_temp.path() + "/two";
+    prepare(folder);
+    QProcess first;
+    first.setWorkingDirectory(folder);
+    first.setProcessChannelMode(QProcess::MergedChannels);
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("PX_TEST_RAISE", "STOP:" + point);
+    first.setProcessEnvironment(env);
+    first.start(QStringLiteral(PX_CLI_PATH), args);
+    QVERIFY(first.waitForStarted());
+    const auto pid = static_cast<pid_t>(first.processId());
+    siginfo_t info{};
+    QVERIFY(::waitid(P_PID, static_cast<id_t>(pid), &info, WSTOPPED | WNOWAIT) == 0);
+    QCOMPARE(info.si_code, CLD_STOPPED);
+    PX_EXPECT_CLEAN_FAILURE(folder, args, {}, 1, target,
+                            "another run \\(process " + QString::number(pid) +
+                                "\\) is writing it now; nothing was changed");
+    ::kill(pid, SIGCONT);
+    QVERIFY(first.waitForFinished(120000));
+    QCOMPARE(first.exitStatus(), QProcess::NormalExit);
+    QVERIFY2(first.exitCode() == 0, first.readAll().constData());
+    for (const QString& name : snapshot(folder).keys())
+        QVERIFY2(!name.section('/', -1).startsWith(".") || name.endsWith(".parallax-export"),
+                 qPrintable("left behind: " + name));
 }
 
 QTEST_GUILESS_MAIN(FaultSignalTest)

@@ -6,15 +6,26 @@
 #include <QFile>
 #include <QProcess>
 #include <QProcessEnvironment>
+#include <QTest>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <sys/mount.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 
 namespace px::faults {
 
-CliRun runCli(const QString& folder, const QStringList& arguments, const QStringList& environment) {
+CliRun runCli(const QString& folder, const QStringList& arguments, const QStringList& environment,
+              long long addressSpace) {
     QProcess process;
+    if (addressSpace > 0) {
+        process.setChildProcessModifier([addressSpace] {
+            const rlimit limit{static_cast<rlim_t>(addressSpace),
+                               static_cast<rlim_t>(addressSpace)};
+            ::setrlimit(RLIMIT_AS, &limit);
+        });
+    }
     process.setWorkingDirectory(folder);
     process.setProcessChannelMode(QProcess::MergedChannels);
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -37,6 +48,12 @@ CliRun runCli(const QString& folder, const QStringList& arguments, const QString
     return run;
 }
 
+void writeFile(const QString& path, const QByteArray& bytes) {
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    QCOMPARE(file.write(bytes), bytes.size());
+}
+
 QMap<QString, QByteArray> snapshot(const QString& folder) {
     QMap<QString, QByteArray> entries;
     QDirIterator it(folder, QDir::AllEntries | QDir::Hidden | QDir::System | QDir::NoDotAndDotDot,
@@ -44,12 +61,24 @@ QMap<QString, QByteArray> snapshot(const QString& folder) {
     const QDir root(folder);
     while (it.hasNext()) {
         const QString path = it.next();
-        QFile file(path);
         const QString name = root.relativeFilePath(path);
-        if (it.fileInfo().isDir())
+        // By lstat: a link is its target's name, a FIFO or device its kind (opening a FIFO to
+        // read it would wait for a writer forever).
+        struct stat st {};
+        if (::lstat(path.toLocal8Bit().constData(), &st) != 0)
+            continue;
+        if (S_ISDIR(st.st_mode)) {
             entries.insert(name + "/", QByteArray());
-        else if (file.open(QIODevice::ReadOnly))
-            entries.insert(name, file.readAll());
+        } else if (S_ISLNK(st.st_mode)) {
+            entries.insert(name, "<link to " + QFile::symLinkTarget(path).toUtf8() + ">");
+        } else if (!S_ISREG(st.st_mode)) {
+            entries.insert(name, "<special " + QByteArray::number(st.st_mode & S_IFMT) + " " +
+                                     QByteArray::number(static_cast<qulonglong>(st.st_rdev)) + ">");
+        } else {
+            QFile file(path);
+            if (file.open(QIODevice::ReadOnly))
+                entries.insert(name, file.readAll());
+        }
     }
     return entries;
 }

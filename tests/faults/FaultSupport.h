@@ -16,11 +16,16 @@ struct CliRun {
     double seconds = 0.0; // wall time of the process
 };
 
-// Runs parallax-cli in `folder` with `environment` ("NAME=value") added.
+// Runs parallax-cli in `folder` with `environment` ("NAME=value") added; `addressSpace` > 0
+// limits the process's memory (RLIMIT_AS, bytes): an allocation past it fails.
 CliRun runCli(const QString& folder, const QStringList& arguments,
-              const QStringList& environment = {});
+              const QStringList& environment = {}, long long addressSpace = 0);
 
-// Every file and folder under `folder` (hidden ones included), with the bytes of each file.
+// Writes `bytes` to `path` (a test's input file), replacing it.
+void writeFile(const QString& path, const QByteArray& bytes);
+
+// Every file and folder under `folder` (hidden ones included), with the bytes of each file (a
+// symbolic link: its target; a FIFO, socket or device: its kind).
 QMap<QString, QByteArray> snapshot(const QString& folder);
 
 // Names what differs between two snapshots ("" if nothing): changed, added and removed entries.
@@ -55,9 +60,9 @@ void unmount(const QString& folder);
         const auto before_ = px::faults::snapshot(folder);                                         \
         const px::faults::CliRun run_ = px::faults::runCli(folder, args, env);                     \
         const auto after_ = px::faults::snapshot(folder);                                          \
-        const bool named_ =                                                                        \
-            run_.output.contains("error: ") && run_.output.contains(file) &&                       \
-            !run_.output.contains(QRegularExpression("\\.tmp[0-9]+-|export-(tmp|old)[0-9]"));      \
+        const bool named_ = run_.output.contains("error: ") && run_.output.contains(file) &&       \
+                            !run_.output.contains(                                                 \
+                                QRegularExpression("\\.tmp[0-9]+-|(export|set)-(tmp|old)[0-9]"));  \
         const bool reason_ = run_.output.contains(QRegularExpression(reason));                     \
         px::faults::record(run_, run_.status == (rc) && named_ && reason_, run_.signal != 0,       \
                            px::faults::bytesLost(before_, after_));                                \

@@ -240,6 +240,22 @@ private slots:
         }
     }
 
+    // Save As onto one of the document's own map files (picked in the file dialog by mistake) is
+    // refused, and the map stays as it was.
+    void saveAsOntoAMapRefused() {
+        QTemporaryDir dir;
+        const std::string height = writeGrey(dir, "w_height.png", 8, 8, 0.5f);
+        const Result<std::string> before = readTextFile(height, false);
+        Result<Loaded> loaded =
+            loadMapFile(makeSampleState(ProceduralMap::Bricks, 8), MapKind::Height, height);
+        QVERIFY(loaded);
+        const Result<DocumentState> saved = saveDocumentState(loaded->state, height);
+        QVERIFY(!saved);
+        QVERIFY2(saved.error().message.find("is the same file as") != std::string::npos,
+                 saved.error().message.c_str());
+        QCOMPARE(readTextFile(height, false).value(), before.value());
+    }
+
     void relativePathsSurviveSaveAsElsewhere() {
         QTemporaryDir dir;
         QVERIFY(QDir().mkpath(dir.filePath("a/maps")));

@@ -9,13 +9,15 @@
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <string_view>
 
 namespace px::studio {
 
 namespace {
 
 Result<Image> readMapImage(const std::string& path, int minChannels, const char* what) {
-    Result<Image> image = readImage(path);
+    Result<Image> image = readImage(
+        path, std::string_view(what) == "colour map" ? colourMapReading() : ImageReadOptions{});
     if (!image)
         return image.error();
     if (image->channels < minChannels)

@@ -2,6 +2,8 @@
 
 #include "model/MapLoading.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/io/Inputs.h"
+#include "parallax/io/OutputGate.h"
 #include "parallax/material/MaterialFile.h"
 
 #include <cmath>
@@ -117,6 +119,25 @@ std::string mapFileFor(const std::string& materialPath, MapKind kind) {
 }
 
 Result<DocumentState> saveDocumentState(const DocumentState& state, const std::string& path) {
+    // The map files the document reads as they are are inputs (parallax/io/Inputs.h): neither the
+    // material file ("Save As bricks_height.png") nor a map written on the way may replace one.
+    const InputSession session;
+    for (MapKind kind : kAllMapKinds) {
+        const std::string& file = mapPath(state.material.maps, kind);
+        if (!state.isUnsaved(kind) && !file.empty()) {
+            if (Status s = noteInput(file, "a map of the material"); !s)
+                return s.error();
+        }
+    }
+    // Every file the save writes is checked before the first is written: a refusal leaves none.
+    if (Result<fs::path> target = outputTarget(path); !target)
+        return target.error();
+    for (MapKind kind : kAllMapKinds) {
+        if (state.isUnsaved(kind) && state.hasMap(kind)) {
+            if (Result<fs::path> target = outputTarget(mapFileFor(path, kind)); !target)
+                return target.error();
+        }
+    }
     DocumentState saved = state;
     for (MapKind kind : kAllMapKinds) {
         if (!state.isUnsaved(kind) || !state.hasMap(kind))

@@ -4,12 +4,13 @@
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/io/Fnv1a.h"
+#include "parallax/io/Inputs.h"
+#include "parallax/io/OutputGate.h"
 
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -73,7 +74,7 @@ void trim(const fs::path& dir, std::uint64_t limit) {
     for (const Entry& e : entries) {
         if (total <= limit)
             break;
-        if (fs::remove(e.path, ec))
+        if (removeOwned(e.path, Removal::CacheEntry))
             total -= e.bytes;
     }
 }
@@ -90,25 +91,27 @@ fs::path coneCachePath(const fs::path& dir, const ConeCacheKey& key) {
     return dir / name;
 }
 
-std::optional<ConeMap> readCachedCone(const fs::path& dir, const ConeCacheKey& key) {
+Result<std::optional<ConeMap>> readCachedCone(const fs::path& dir, const ConeCacheKey& key) {
     const fs::path path = coneCachePath(dir, key);
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        return std::nullopt;
+    // Opened without blocking (a FIFO in the cache must not hang the run), recorded as an input
+    // only once its content is used: a damaged file is replaced by the next write.
+    Result<InputFile> in = InputFile::open(path.string(), "a cached cone map", false);
+    if (!in || key.width <= 0 || key.height <= 0)
+        return std::optional<ConeMap>();
     Header found{};
     const Header wanted = headerFor(key);
-    if (!in.read(reinterpret_cast<char*>(&found), sizeof found) || !sameKey(found, wanted) ||
-        key.width <= 0 || key.height <= 0)
-        return std::nullopt;
     ConeMap map(key.kind, key.width, key.height);
     const std::size_t bytes = map.sqrtRatio.size() * sizeof(float);
-    if (!in.read(reinterpret_cast<char*>(map.sqrtRatio.data()), std::streamsize(bytes)) ||
-        in.peek() != std::ifstream::traits_type::eof() ||
+    if (in->size() != sizeof found + bytes || !in->readAt(0, &found, sizeof found) ||
+        !sameKey(found, wanted) || !in->readAt(sizeof found, map.sqrtRatio.data(), bytes) ||
         fnv1a(map.sqrtRatio.data(), bytes) != found.payload)
-        return std::nullopt;
+        return std::optional<ConeMap>();
+    // A good entry is an input like any other: an output of this run naming it is refused.
+    if (Status s = in->record("a cached cone map"); !s)
+        return s.error();
     std::error_code ec;
     fs::last_write_time(path, fs::file_time_type::clock::now(), ec); // its last use, for trim
-    return map;
+    return std::optional<ConeMap>(std::move(map));
 }
 
 Status writeCachedCone(const fs::path& dir, const ConeCacheKey& key, const ConeMap& map,

@@ -27,8 +27,10 @@ struct ConeCacheKey {
 // The file `key`'s map has (or would have) in `dir`.
 std::filesystem::path coneCachePath(const std::filesystem::path& dir, const ConeCacheKey& key);
 
-// The map, or nothing when absent, damaged or written by another baker.
-std::optional<ConeMap> readCachedCone(const std::filesystem::path& dir, const ConeCacheKey& key);
+// The map, or nothing when absent, damaged or written by another baker; an error when the entry
+// is a file this run means to write (Inputs.h: planOutput).
+Result<std::optional<ConeMap>> readCachedCone(const std::filesystem::path& dir,
+                                              const ConeCacheKey& key);
 
 // Writes `map` for `key` (creating `dir`), then removes this cache's oldest files (by their last
 // use) while its files take more than `limitBytes`. Never touches a file it did not name. An

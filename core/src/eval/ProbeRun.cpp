@@ -122,8 +122,12 @@ Status ProbeRun::prepare(const std::vector<Technique>& techniques) {
             continue;
         const ConeCacheKey diskKey{m_contentHash, field.width, field.height, m_config.wrap, kind};
         std::optional<ConeMap> kept;
-        if (!m_config.cacheDir.empty())
-            kept = readCachedCone(m_config.cacheDir, diskKey);
+        if (!m_config.cacheDir.empty()) {
+            Result<std::optional<ConeMap>> read = readCachedCone(m_config.cacheDir, diskKey);
+            if (!read)
+                return read.error();
+            kept = std::move(*read);
+        }
         if (kept) {
             slot = std::make_shared<const ConeMap>(std::move(*kept));
             ++m_mapsFromDisk;

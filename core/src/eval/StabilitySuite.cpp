@@ -5,11 +5,13 @@
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/heightfield/HeightFieldLoader.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/io/OutputGate.h"
 #include "parallax/trace/TraceScene.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <memory>
@@ -129,16 +131,17 @@ StabilityRow nanInFloatMapRow(const CaseSpec& spec) {
     row.technique = "loader";
     namespace fs = std::filesystem;
     std::error_code ec;
-    const fs::path dir =
-        fs::temp_directory_path(ec) /
-        ("parallax-stability-" + std::to_string(reinterpret_cast<std::uintptr_t>(&row)));
-    fs::create_directories(dir, ec);
+    // A folder of its own (mkdtemp), so that removing it afterwards removes nobody else's files.
+    std::string pattern = (fs::temp_directory_path(ec) / "parallax-stability-XXXXXX").string();
+    const fs::path dir = ::mkdtemp(pattern.data()) != nullptr ? fs::path(pattern) : fs::path();
     const std::string file = (dir / "nan-height.exr").string();
     Image image(spec.width, spec.height, 1);
     image.at(3, 2) = std::numeric_limits<float>::quiet_NaN();
     ImageWriteOptions write;
     write.format = PixelFormat::Float;
-    if (Status s = writeImage(file, image, write); !s) {
+    if (dir.empty()) {
+        row.failure = "could not create a temporary folder for the test file";
+    } else if (Status s = writeImage(file, image, write); !s) {
         row.failure = "could not write the test file: " + s.error().message;
     } else {
         Result<HeightField> loaded = loadHeightField(file);
@@ -152,7 +155,8 @@ StabilityRow nanInFloatMapRow(const CaseSpec& spec) {
                 row.failure = "the message does not say NaN at texel (3, 2)";
         }
     }
-    fs::remove_all(dir, ec);
+    if (!dir.empty())
+        discardTemporary(dir);
     row.passed = row.failure.empty();
     return row;
 }

@@ -2,10 +2,10 @@
 
 #include "parallax/Version.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/Inputs.h"
 #include "parallax/io/Temporaries.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <sstream>
 #include <unistd.h>
@@ -16,21 +16,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A hidden sibling of `target`, unique to this process and call.
-fs::path siblingFor(const fs::path& target, const char* role) {
-    static std::atomic<unsigned> counter{0};
-    return target.parent_path() / ("." + target.filename().string() + "." + role +
-                                   std::to_string(::getpid()) + "-" + std::to_string(counter++));
-}
-
 std::string where(const fs::path& path) {
     return path.string();
 }
 
-// The files an earlier export's marker lists (every line after the first).
+// The files an earlier export's marker lists (every line after the first). The marker is the
+// project's own file, not an input.
 std::vector<std::string> listedFiles(const fs::path& folder) {
     std::vector<std::string> files;
-    Result<std::string> marker = readTextFile((folder / kExportMarker).string());
+    Result<std::string> marker = readTextFile((folder / kExportMarker).string(), false);
     if (!marker)
         return files;
     std::istringstream lines(*marker);
@@ -48,6 +42,23 @@ bool contains(const std::vector<std::string>& list, const std::string& name) {
     return std::find(list.begin(), list.end(), name) != list.end();
 }
 
+// An earlier export's file that this run reads: the update would replace or remove it.
+Status noInputAmong(const fs::path& target, const std::vector<std::string>& listed) {
+    for (const std::string& name : listed) {
+        const std::optional<FileIdentity> id = identityOf((target / name).string());
+        if (!id)
+            continue;
+        if (const std::optional<InputEntry> input = inputWithIdentity(*id))
+            return fileError(where(target),
+                             "holds " + name +
+                                 ", a file of the earlier export that this run reads as " +
+                                 describeInput(*input) +
+                                 ": updating the export would replace or remove it; export to "
+                                 "another folder");
+    }
+    return success();
+}
+
 } // namespace
 
 Result<ExportFolder> ExportFolder::begin(const fs::path& requested, bool force) {
@@ -59,11 +70,25 @@ Result<ExportFolder> ExportFolder::begin(const fs::path& requested, bool force) 
         target = target.parent_path();
     if (target == target.root_path())
         return fileError(where(requested), "cannot export into the root folder");
+    fs::create_directories(target.parent_path(), ec);
+    if (ec)
+        return fileError(target.parent_path().string(),
+                         "cannot create the folder (" + ec.message() + ")");
+    // One export at a time: the checks below and the commit see the same folder.
+    Result<OutputLock> lock = OutputLock::take(target);
+    if (!lock)
+        return lock.error();
+    removeStaleTemporaries(target); // what a killed export left beside it (finishing a commit)
 
-    ExportFolder folder;
-    folder.m_target = target;
-    if (fs::exists(fs::symlink_status(target, ec))) {
-        if (!fs::is_directory(fs::symlink_status(target, ec)))
+    bool replace = false;
+    std::vector<std::string> earlier;
+    const fs::file_status status = fs::symlink_status(target, ec);
+    if (fs::exists(status)) {
+        if (fs::is_symlink(status))
+            return fileError(where(requested),
+                             "is a symbolic link (to " + fs::read_symlink(target, ec).string() +
+                                 "); an export replaces whole folders: give the folder itself");
+        if (!fs::is_directory(status))
             return fileError(where(requested), "exists and is not a folder; choose another output");
         const bool empty = fs::is_empty(target, ec);
         if (ec)
@@ -74,55 +99,28 @@ Result<ExportFolder> ExportFolder::begin(const fs::path& requested, bool force) 
             return fileError(where(requested),
                              "holds files that no export wrote; refusing to replace it even with "
                              "--force (empty it or choose another folder)");
-        folder.m_replace = true;
+        replace = true;
+        earlier = listedFiles(target);
+        if (Status s = noInputAmong(target, earlier); !s)
+            return s.error();
     }
-    fs::create_directories(target.parent_path(), ec);
-    if (!ec)
-        removeStaleTemporaries(target); // what a killed export left beside it
-    if (ec)
-        return fileError(target.parent_path().string(),
-                         "cannot create the folder (" + ec.message() + ")");
-    folder.m_staging = siblingFor(target, "export-tmp");
-    if (!fs::create_directory(folder.m_staging, ec) || ec)
-        return fileError(where(requested),
-                         "cannot create the export's working folder beside it in " +
-                             target.parent_path().string() + " (" +
-                             (ec ? ec.message() : std::string("it exists")) + ")");
-    folder.m_stagingHandle = registerTemporary(folder.m_staging);
+    Result<StagedSet> stage = StagedSet::begin(target, "export-tmp");
+    if (!stage)
+        return fileError(where(requested), "cannot create the export's working folder beside it (" +
+                                               stage.error().message + ")");
+    ExportFolder folder(target, std::move(*lock), std::move(*stage));
+    folder.m_replace = replace;
+    folder.m_earlier = std::move(earlier);
     return folder;
 }
 
-ExportFolder::ExportFolder(ExportFolder&& other) noexcept
-    : m_target(std::move(other.m_target)), m_staging(std::move(other.m_staging)),
-      m_files(std::move(other.m_files)), m_stagingHandle(other.m_stagingHandle),
-      m_fileHandles(std::move(other.m_fileHandles)), m_replace(other.m_replace),
-      m_done(other.m_done) {
-    other.m_staging.clear();
-    other.m_stagingHandle = -1;
-    other.m_fileHandles.clear();
-    other.m_done = true;
-}
-
-ExportFolder::~ExportFolder() {
-    if (!m_done && !m_staging.empty()) {
-        std::error_code ignored;
-        fs::remove_all(m_staging, ignored);
-    }
-    for (int handle : m_fileHandles)
-        releaseTemporary(handle);
-    releaseTemporary(m_stagingHandle);
-}
-
 std::string ExportFolder::pathFor(const std::string& name) const {
-    // Registered so that Ctrl-C removes it before the staging folder (newest first).
-    const fs::path path = m_staging / name;
-    m_fileHandles.push_back(registerTemporary(path));
-    return path.string();
+    return m_stage.pathFor(name);
 }
 
 Error ExportFolder::asTarget(const Error& error) const {
     auto replaced = [this](std::string text) {
-        const std::string staging = m_staging.string(), target = m_target.string();
+        const std::string staging = m_stage.folder().string(), target = m_target.string();
         for (std::size_t at = text.find(staging); at != std::string::npos;
              at = text.find(staging, at + target.size()))
             text.replace(at, staging.size(), target);
@@ -132,21 +130,24 @@ Error ExportFolder::asTarget(const Error& error) const {
 }
 
 Result<ExportFolder::Committed> ExportFolder::commit(std::string_view description) {
+    Result<Committed> committed = commitStaged(description);
+    if (committed)
+        m_lock.reset();
+    return committed;
+}
+
+Result<ExportFolder::Committed> ExportFolder::commitStaged(std::string_view description) {
     std::string marker = "Written by Parallax Studio " + std::string(kVersion) + ": " +
                          std::string(description) + "\n";
     for (const std::string& file : m_files)
         marker += file + "\n";
     if (Status s = writeTextFile(pathFor(std::string(kExportMarker)), marker); !s)
-        return s.error();
-
-    testInterruptPoint("export-commit");
-    std::error_code ec;
+        return asTarget(s.error());
     if (!m_replace) {
-        fs::rename(m_staging, m_target, ec); // also replaces an empty folder
-        if (ec)
+        testInterruptPoint("export-commit");
+        if (Status s = m_stage.commitAsFolder(m_target); !s)
             return fileError(where(m_target),
-                             "cannot move the export into place (" + ec.message() + ")");
-        m_done = true;
+                             "cannot move the export into place (" + s.error().message + ")");
         return Committed{m_files, {}};
     }
     return updateInPlace();
@@ -157,35 +158,21 @@ Result<ExportFolder::Committed> ExportFolder::updateInPlace() {
     if (::access(m_target.c_str(), W_OK | X_OK) != 0)
         return fileError(where(m_target), "cannot update the earlier export (" +
                                               systemReason(errno) + "); it is unchanged");
-    std::error_code ec;
-    for (const std::string& name : m_files) {
-        if (fs::is_directory(m_target / name, ec))
-            return fileError((m_target / name).string(),
-                             "is a folder where the export writes a file; it is unchanged");
+    StagedSet::Update update;
+    update.into = m_target;
+    update.moves = m_files;
+    update.moves.emplace_back(kExportMarker); // last: the manifest of what is there
+    for (const std::string& name : m_earlier) {
+        if (!contains(m_files, name))
+            update.removals.push_back(name);
     }
-    const std::vector<std::string> earlier = listedFiles(m_target);
+    update.commitPoint = "export-commit";
+    update.updatePoint = "export-update";
+    Result<std::vector<std::string>> kept = m_stage.commitInto(update);
+    if (!kept)
+        return kept.error();
     Committed result{m_files, {}};
-    {
-        const InterruptDeferral deferral; // a half-updated folder is worse than a finished one
-        for (const std::string& name : m_files) {
-            if (&name == &m_files[m_files.size() / 2])
-                testInterruptPoint("export-update");
-            fs::rename(m_staging / name, m_target / name, ec);
-            if (ec)
-                return fileError((m_target / name).string(),
-                                 "cannot replace the file (" + ec.message() + ")");
-        }
-        for (const std::string& name : earlier) {
-            if (!contains(m_files, name))
-                fs::remove(m_target / name, ec);
-        }
-        fs::rename(m_staging / kExportMarker, m_target / kExportMarker, ec);
-        if (ec)
-            return fileError(where(m_target / kExportMarker),
-                             "cannot replace the file (" + ec.message() + ")");
-        m_done = true;
-        fs::remove_all(m_staging, ec);
-    }
+    std::error_code ec;
     for (fs::directory_iterator it(m_target, ec), end; !ec && it != end; it.increment(ec)) {
         const std::string name = it->path().filename().string();
         if (name != kExportMarker && !contains(m_files, name))

@@ -56,7 +56,9 @@ struct ExportJob {
 // The float as the shortest decimal that reads back to it (io/ShortestDecimal.h), as text: "0.05".
 std::string formatDecimal(float value);
 
-// A file name stem from a material name: letters, digits, '-' and '_' kept, the rest '_'.
+// A file name stem from a material name: letters and digits of any script (UTF-8), '-' and '_'
+// kept; spaces, punctuation, controls, invisible and bidirectional-override characters and bytes
+// that are not UTF-8 become '_'; at most 100 bytes, cut between characters.
 std::string fileStem(const std::string& name);
 
 // Adds the material's specialised shaders to a package (and their lines to `files`); returns

@@ -10,6 +10,7 @@
 #include "parallax/bake/NormalMapBaker.h"
 #include "parallax/eval/AutoTechnique.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/Inputs.h"
 #include "parallax/material/MaterialFile.h"
 
 #include <cstdio>
@@ -18,12 +19,59 @@ namespace px {
 
 namespace exporter {
 
+namespace {
+
+// The code point of the UTF-8 sequence at `at` and its length, or length 0 if it is not one
+// (overlong, a surrogate, past U+10FFFF, cut short).
+std::pair<char32_t, std::size_t> codePoint(const std::string& text, std::size_t at) {
+    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+    const unsigned char lead = byte(at);
+    const std::size_t length = lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC2 ? 2 : 0;
+    if (length == 0 || lead > 0xF4 || at + length > text.size())
+        return {0, 0};
+    char32_t c = lead & (0x7F >> length);
+    for (std::size_t k = 1; k < length; ++k) {
+        if ((byte(at + k) & 0xC0) != 0x80)
+            return {0, 0};
+        c = (c << 6) | (byte(at + k) & 0x3F);
+    }
+    const char32_t least[] = {0, 0, 0x80, 0x800, 0x10000};
+    if (c < least[length] || (c >= 0xD800 && c <= 0xDFFF) || c > 0x10FFFF)
+        return {0, 0};
+    return {c, length};
+}
+
+// Characters a file name should not hold although the file system takes them: C1 controls,
+// invisible spaces and joiners, the byte-order mark, and bidirectional overrides (a name that
+// reads differently from what it is).
+bool invisible(char32_t c) {
+    return c < 0xA0 || c == 0xAD || (c >= 0x200B && c <= 0x200F) || (c >= 0x2028 && c <= 0x202E) ||
+           (c >= 0x2060 && c <= 0x206F) || c == 0xFEFF;
+}
+
+} // namespace
+
 std::string fileStem(const std::string& name) {
+    constexpr std::size_t kMaxBytes = 100; // names under the file systems' 255 with suffixes
     std::string stem;
-    for (const char c : name) {
-        const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                          (c >= '0' && c <= '9') || c == '-' || c == '_';
-        stem += keep ? c : '_';
+    for (std::size_t at = 0; at < name.size();) {
+        const char c = name[at];
+        std::string piece = "_";
+        std::size_t used = 1;
+        if (static_cast<unsigned char>(c) < 0x80) {
+            const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                              (c >= '0' && c <= '9') || c == '-' || c == '_';
+            if (keep)
+                piece = std::string(1, c);
+        } else if (const auto [point, length] = codePoint(name, at); length > 0) {
+            used = length;
+            if (!invisible(point))
+                piece = name.substr(at, length);
+        }
+        if (stem.size() + piece.size() > kMaxBytes)
+            break;
+        stem += piece;
+        at += used;
     }
     return stem.empty() ? "material" : stem;
 }
@@ -144,6 +192,15 @@ std::optional<EngineMarch> engineMarchOf(ExportFormat format) {
 
 Result<ExportResult> exportMaterial(const Material& material, const std::string& materialFile,
                                     const ExportOptions& options) {
+    // What the export reads is recorded, so that updating an earlier export never replaces or
+    // removes one of its inputs (the editor's exports too; the command line has its own session).
+    const InputSession session;
+    if (!materialFile.empty()) {
+        if (Status s = noteInput(materialFile, "the material file"); !s)
+            return s.error();
+    }
+    if (Status s = noteMaterialMaps(material, materialFile); !s)
+        return s.error();
     if (std::vector<MaterialProblem> problems = validateMaterial(material); !problems.empty())
         return Error{formatProblems(problems, materialFile.empty() ? material.name : materialFile)};
     // Everything that can fail on the input fails before the output folder is touched.

@@ -5,12 +5,14 @@
 #include "PngCheck.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/io/FileExtension.h"
+#include "parallax/io/Inputs.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <new>
 #include <system_error>
@@ -60,15 +62,43 @@ Status checkFinite(const std::string& path, const Image& image) {
                                std::to_string(first % image.channels));
 }
 
+// The first texel of magnitude over `limit`, named with the limit and why it is one.
+Status checkMagnitude(const std::string& path, const Image& image, float limit,
+                      const std::string& why) {
+    if (std::isinf(limit))
+        return success();
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        if (std::abs(image.pixels[i]) <= limit)
+            continue;
+        const std::size_t texel = i / image.channels;
+        char value[32], bound[32];
+        std::snprintf(value, sizeof value, "%g", static_cast<double>(image.pixels[i]));
+        std::snprintf(bound, sizeof bound, "%g", static_cast<double>(limit));
+        return fileError(path, "texel (" + std::to_string(texel % image.width) + ", " +
+                                   std::to_string(texel / image.width) + ") channel " +
+                                   std::to_string(i % image.channels) + " holds " + value +
+                                   ", beyond the " + bound + " " + why);
+    }
+    return success();
+}
+
 } // namespace
 
+ImageReadOptions colourMapReading() {
+    ImageReadOptions read;
+    read.maxMagnitude = 100.0f;
+    read.limitReason = "a colour map may hold (its 16-bit float texture would overflow and the "
+                       "channel render black; a colour is 0 to 1)";
+    return read;
+}
+
 Result<Image> readImage(const std::string& path, const ImageReadOptions& options) {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec))
-        return fileError(path, "no such file");
-    if (std::filesystem::is_directory(path, ec))
-        return fileError(path, "is a folder, not an image file");
-    if (std::filesystem::file_size(path, ec) == 0 && !ec)
+    // Opened first without blocking: a FIFO or a device is refused by name, never waited on, and
+    // the file is recorded as an input of the run (Inputs.h) before anything reads it.
+    Result<InputFile> file = InputFile::open(path);
+    if (!file)
+        return file.error();
+    if (file->size() == 0)
         return fileError(path, "the file is empty (0 bytes)");
     // Before OpenEXR, which allocates what a damaged header claims (fuzzing found 1.7 GB).
     if (Status exr = checkExrHeader(path); !exr)
@@ -105,7 +135,7 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
                      bitsPerTexel,
                      input->format_name(),
                      spec.get_string_attribute("compression"),
-                     static_cast<std::int64_t>(std::filesystem::file_size(path, ec))};
+                     static_cast<std::int64_t>(file->size())};
     if (Status fits = checkImageClaim(path, claim); !fits)
         return fits.error();
     if (Status data = checkPngData(path); !data)
@@ -122,6 +152,8 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
             if (Status finite = checkFinite(path, image); !finite)
                 return finite.error();
         }
+        if (Status s = checkMagnitude(path, image, options.maxMagnitude, options.limitReason); !s)
+            return s.error();
         return image;
     } catch (const std::bad_alloc&) {
         return fileError(path, "not enough memory to read the " + std::to_string(spec.width) + "x" +

@@ -1,11 +1,17 @@
 #include "parallax/image/ImageSet.h"
 
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/OutputGate.h"
+#include "parallax/io/OutputLock.h"
+#include "parallax/io/StagedSet.h"
+#include "parallax/io/Temporaries.h"
 
 #include <algorithm>
 #include <filesystem>
 
 namespace px {
+
+namespace fs = std::filesystem;
 
 std::vector<std::string> numberedFiles(const std::string& out, int count) {
     const std::filesystem::path path(out);
@@ -25,40 +31,45 @@ std::vector<std::string> numberedFiles(const std::string& out, int count) {
 Status writeImageSet(const std::vector<std::string>& files,
                      const std::function<Result<Image>(int)>& frame,
                      const ImageWriteOptions& options) {
-    std::vector<std::filesystem::path> staged;
-    auto discard = [&staged] {
-        for (const std::filesystem::path& p : staged) {
-            std::error_code ignored;
-            std::filesystem::remove(p, ignored);
-        }
-    };
+    if (files.empty())
+        return success();
+    // One writer of the set at a time; a killed run's stage is finished or removed first.
+    const fs::path anchor(files.front());
+    const fs::path folder = anchor.parent_path().empty() ? fs::path(".") : anchor.parent_path();
+    Result<OutputLock> lock = OutputLock::take(anchor);
+    if (!lock)
+        return lock.error();
+    std::vector<std::string> names;
+    for (const std::string& file : files) {
+        removeStaleTemporaries(file);
+        if (Status s = checkReplaceable(file); !s) // before any frame is made
+            return s;
+        names.push_back(fs::path(file).filename().string());
+    }
+    Result<StagedSet> stage = StagedSet::begin(anchor, "set-tmp");
+    if (!stage)
+        return stage.error();
     for (std::size_t i = 0; i < files.size(); ++i) {
         Result<Image> image = frame(static_cast<int>(i));
-        if (!image) {
-            discard();
+        if (!image)
             return image.error();
-        }
-        // The temporary keeps the extension: the writer picks the format from it.
-        std::filesystem::path temp = temporaryPathFor(files[i]);
-        temp += std::filesystem::path(files[i]).extension();
-        if (Status s = writeImage(temp.string(), *image, options); !s) {
-            discard();
+        const std::string staged = stage->pathFor(names[i]);
+        if (Status s = writeImage(staged, *image, options); !s) {
             std::string message = s.error().message;
-            const std::string name = temp.string();
-            for (std::size_t at = message.find(name); at != std::string::npos;
-                 at = message.find(name))
-                message.replace(at, name.size(), files[i]);
+            for (std::size_t at = message.find(staged); at != std::string::npos;
+                 at = message.find(staged))
+                message.replace(at, staged.size(), files[i]);
             return Error{message, s.error().kind, files[i]};
         }
-        staged.push_back(temp);
     }
-    for (std::size_t i = 0; i < files.size(); ++i) {
-        if (Status s = commitTemporary(staged[i], files[i]); !s) {
-            staged.erase(staged.begin(), staged.begin() + static_cast<std::ptrdiff_t>(i + 1));
-            discard();
-            return s;
-        }
-    }
+    StagedSet::Update update;
+    update.into = folder;
+    update.moves = names;
+    update.commitPoint = "frames-commit";
+    update.updatePoint = "frames-update";
+    Result<std::vector<std::string>> committed = stage->commitInto(update);
+    if (!committed)
+        return committed.error();
     return success();
 }
 

@@ -1,5 +1,7 @@
 #include "parallax/io/AtomicWrite.h"
 
+#include "parallax/io/Inputs.h"
+#include "parallax/io/OutputGate.h"
 #include "parallax/io/Temporaries.h"
 
 #include <algorithm>
@@ -8,8 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
-#include <sstream>
+#include <limits>
 #include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
@@ -66,40 +67,34 @@ std::string systemReason(int code) {
 }
 
 fs::path temporaryPathFor(const fs::path& target) {
-    static std::atomic<unsigned> counter{0};
-    return target.parent_path() / ("." + target.filename().string() + ".tmp" +
-                                   std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    return temporarySibling(target, "tmp");
 }
 
 Status commitTemporary(const fs::path& temp, const fs::path& target) {
-    std::error_code ec;
-    if (fs::is_directory(target, ec)) {
-        fs::remove(temp, ec);
-        return fileError(target.string(), "is a folder; give a file name");
-    }
-    fs::rename(temp, target, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(temp, ignored);
-        return fileError(target.string(), "cannot replace the file (" + ec.message() + ")");
+    if (Status s = replaceWith(temp, target); !s) {
+        discardTemporary(temp);
+        return s;
     }
     return success();
 }
 
 Status writeFileAtomically(const std::string& path, std::string_view contents) {
-    const fs::path target(path);
-    std::error_code ec;
-    if (fs::is_directory(target, ec))
-        return fileError(path, "is a folder; give a file name");
+    // The file itself, or a symbolic link's regular target (the link stays); not an input, not a
+    // folder or a special file.
+    Result<fs::path> resolved = outputTarget(path);
+    if (!resolved)
+        return resolved.error();
+    const fs::path target = *resolved;
     removeStaleTemporaries(target);
     const fs::path temp = temporaryPathFor(target);
     TemporaryGuard guard(temp);
     const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0)
         return createError(path, errno);
-    struct stat previous {};
-    if (::stat(target.c_str(), &previous) == 0) // keep the replaced file's permissions
-        ::fchmod(fd, previous.st_mode & 07777);
+    holdTemporary(fd); // until renamed: no other run's sweep takes it meanwhile
+    struct stat st {};
+    if (::lstat(target.c_str(), &st) == 0) // keep the replaced file's permissions
+        ::fchmod(fd, st.st_mode & 07777);
     const std::size_t half = contents.size() / 2;
     int code = writeAll(fd, contents.substr(0, half));
     testInterruptPoint("write");
@@ -107,35 +102,31 @@ Status writeFileAtomically(const std::string& path, std::string_view contents) {
         code = writeAll(fd, contents.substr(half), static_cast<long long>(half));
     if (code == 0 && ::fsync(fd) != 0)
         code = errno;
-    if (::close(fd) != 0 && code == 0)
-        code = errno;
     if (code != 0) {
-        fs::remove(temp, ec);
+        ::close(fd);
+        discardTemporary(temp);
         return fileError(path, "writing failed (" + systemReason(code) +
                                    "); the previous file, if any, is unchanged");
     }
     testInterruptPoint("commit");
-    return commitTemporary(temp, target);
+    if (::fstat(fd, &st) == 0)
+        noteCreated({static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)});
+    Status committed = commitTemporary(temp, target);
+    ::close(fd);
+    if (!committed && target != fs::path(path)) // name the file as the user did
+        return fileError(path, "(a link to " + target.string() + "): " + committed.error().message);
+    return committed;
 }
 
 Status writeTextFile(const std::string& path, std::string_view contents) {
     return writeFileAtomically(path, contents);
 }
 
-Result<std::string> readTextFile(const std::string& path) {
-    std::error_code ec;
-    if (!fs::exists(path, ec))
-        return fileError(path, "no such file");
-    if (fs::is_directory(path, ec))
-        return fileError(path, "is a folder, not a file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        return fileError(path, "cannot open the file for reading");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad())
-        return fileError(path, "reading failed");
-    return buffer.str();
+Result<std::string> readTextFile(const std::string& path, bool record) {
+    Result<InputFile> file = InputFile::open(path, {}, record);
+    if (!file)
+        return file.error();
+    return file->readAll(std::numeric_limits<std::uint64_t>::max());
 }
 
 } // namespace px

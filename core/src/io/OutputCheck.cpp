@@ -1,6 +1,7 @@
 #include "parallax/io/OutputCheck.h"
 
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/OutputGate.h"
 
 #include <cerrno>
 #include <filesystem>
@@ -36,6 +37,9 @@ Status checkOne(const NamedPath& out) {
     if (!fs::is_directory(dir, ec))
         return fileError(out.path, "cannot create the file: the folder " + folder.string() +
                                        " does not exist");
+    // A FIFO, a device, a dangling link: before any work.
+    if (Result<fs::path> target = outputTarget(out.path); !target)
+        return target.error();
     if (::access(dir.c_str(), W_OK | X_OK) != 0)
         return fileError(out.path, "cannot create the file in " + dir.string() + " (" +
                                        systemReason(errno) + ")");

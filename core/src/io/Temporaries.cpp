@@ -1,16 +1,27 @@
 #include "parallax/io/Temporaries.h"
 
+#include "parallax/io/Fnv1a.h"
+#include "parallax/io/OutputGate.h"
+#include "parallax/io/StagedSet.h"
+
 #include <array>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
+#include <fcntl.h>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
+#include <vector>
 
 namespace px {
 
@@ -31,36 +42,117 @@ std::atomic<std::uint64_t> gOrder{1};
 std::atomic<int> gDeferDepth{0};
 std::atomic<int> gDeferredSignal{0};
 
-constexpr std::array<std::string_view, 3> kRoles{"tmp", "export-tmp", "export-old"};
+constexpr std::array<std::string_view, 4> kRoles{"tmp", "export-tmp", "set-tmp", "export-old"};
 
-// The pid in ".NAME.<role><pid>-<n>", or -1 if `entry` is not a temporary of `name`.
-long temporaryOwner(const std::string& entry, const std::string& name) {
+// A leftover's owner as its name gives it: ".NAME.<role><pid>-<n>[.<host>]".
+struct Owner {
+    long pid = -1;
+    std::string host; // empty: a name of an older version, without one
+};
+
+bool digits(std::string_view s) {
+    return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
+}
+
+// The owner of `entry` if it is a temporary of `name`.
+std::optional<Owner> temporaryOwner(const std::string& entry, const std::string& name) {
     const std::string prefix = "." + name + ".";
     if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0)
-        return -1;
+        return std::nullopt;
     const std::string_view rest = std::string_view(entry).substr(prefix.size());
+    // Older versions staged a turntable's frames as ".NAME.tmpPID-N.png".
+    const std::string extension = fs::path(name).extension().string();
     for (std::string_view role : kRoles) {
         if (rest.substr(0, role.size()) != role)
             continue;
         const std::string_view tail = rest.substr(role.size());
         const std::size_t dash = tail.find('-');
-        if (dash == 0 || dash == std::string_view::npos || dash + 1 == tail.size())
+        if (dash == std::string_view::npos)
             continue;
-        const std::string_view pid = tail.substr(0, dash), n = tail.substr(dash + 1);
-        auto digits = [](std::string_view s) {
-            return s.find_first_not_of("0123456789") == std::string_view::npos;
-        };
-        if (digits(pid) && digits(n) && pid.size() < 10)
-            return std::stol(std::string(pid));
+        const std::string_view pid = tail.substr(0, dash);
+        std::string_view n = tail.substr(dash + 1), host;
+        if (const std::size_t dot = n.find('.'); dot != std::string_view::npos) {
+            host = n.substr(dot + 1);
+            n = n.substr(0, dot);
+        }
+        if (!digits(pid) || !digits(n) || pid.size() >= 10)
+            continue;
+        const bool hex = host.size() == 8 &&
+                         host.find_first_not_of("0123456789abcdef") == std::string_view::npos;
+        if (!host.empty() && !hex && "." + std::string(host) != extension)
+            continue;
+        return Owner{std::stol(std::string(pid)), hex ? std::string(host) : std::string()};
     }
-    return -1;
+    return std::nullopt;
 }
 
 bool running(long pid) {
     return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH;
 }
 
+// Whether a writer, anywhere, holds its lock on `entry` (an error counts as held: not provably
+// dead). A symbolic link is never one of ours.
+bool lockHeld(const fs::path& entry) {
+    const int fd = ::open(entry.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOFOLLOW);
+    if (fd < 0)
+        return true;
+    const bool held = ::flock(fd, LOCK_EX | LOCK_NB) != 0;
+    ::close(fd);
+    return held;
+}
+
+// Seconds since `entry` last changed.
+double age(const fs::path& entry) {
+    struct stat st {};
+    if (::lstat(entry.c_str(), &st) != 0)
+        return 0.0;
+    return std::difftime(std::time(nullptr), st.st_mtime);
+}
+
+constexpr double kBeyondDoubtSeconds = 3600.0;
+
+bool provablyDead(const fs::path& entry, const Owner& owner) {
+    if (lockHeld(entry))
+        return false;
+    if (owner.host == hostToken())
+        return owner.pid != ::getpid() && !running(owner.pid);
+    return age(entry) > kBeyondDoubtSeconds;
+}
+
 } // namespace
+
+fs::path temporarySibling(const fs::path& target, std::string_view role) {
+    static std::atomic<unsigned> counter{0};
+    return target.parent_path() /
+           ("." + target.filename().string() + "." + std::string(role) +
+            std::to_string(::getpid()) + "-" + std::to_string(counter++) + "." + hostToken());
+}
+
+void holdTemporary(int fd) {
+    while (::flock(fd, LOCK_SH) != 0 && errno == EINTR) {
+    }
+}
+
+const std::string& hostToken() {
+    static const std::string token = [] {
+        std::string id;
+        if (const int fd = ::open("/proc/sys/kernel/random/boot_id", O_RDONLY | O_CLOEXEC);
+            fd >= 0) {
+            char text[64] = {};
+            const ssize_t n = ::read(fd, text, sizeof text);
+            id.assign(text, n > 0 ? static_cast<std::size_t>(n) : 0);
+            ::close(fd);
+        }
+        char ns[64] = {};
+        const ssize_t n = ::readlink("/proc/self/ns/pid", ns, sizeof ns);
+        id.append(ns, n > 0 ? static_cast<std::size_t>(n) : 0);
+        const std::uint64_t h = fnv1a(id.data(), id.size());
+        char hex[9];
+        std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(h ^ (h >> 32)));
+        return std::string(hex);
+    }();
+    return token;
+}
 
 int registerTemporary(const fs::path& path) {
     const std::string text = path.string();
@@ -125,16 +217,21 @@ InterruptDeferral::~InterruptDeferral() {
 }
 
 void testInterruptPoint(const char* point) {
-    static const char* spec = std::getenv("PX_TEST_RAISE");
-    if (spec == nullptr)
+    static std::atomic<bool> fired{false};
+    const char* spec = std::getenv("PX_TEST_RAISE"); // read each time: a forked test sets it
+    if (spec == nullptr || fired.load())
         return;
     const std::string_view text(spec);
     const std::size_t colon = text.find(':');
     if (colon == std::string_view::npos || text.substr(colon + 1) != point)
         return;
     const std::string_view name = text.substr(0, colon);
-    const int signal = name == "TERM" ? SIGTERM : name == "KILL" ? SIGKILL : SIGINT;
-    spec = nullptr; // once
+    const int signal = name == "TERM"   ? SIGTERM
+                       : name == "KILL" ? SIGKILL
+                       : name == "STOP" ? SIGSTOP
+                       : name == "HUP"  ? SIGHUP
+                                        : SIGINT;
+    fired.store(true); // once
     std::raise(signal);
 }
 
@@ -143,14 +240,16 @@ int removeStaleTemporaries(const fs::path& target) {
     const std::string name = target.filename().string();
     if (name.empty())
         return 0;
-    int removed = 0;
+    std::vector<fs::path> dead;
     std::error_code ec;
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-        const long pid = temporaryOwner(it->path().filename().string(), name);
-        if (pid <= 0 || pid == ::getpid() || running(pid))
-            continue;
-        std::error_code ignored;
-        if (fs::remove_all(it->path(), ignored) > 0)
+        const std::optional<Owner> owner = temporaryOwner(it->path().filename().string(), name);
+        if (owner && provablyDead(it->path(), *owner))
+            dead.push_back(it->path());
+    }
+    int removed = 0;
+    for (const fs::path& entry : dead) {
+        if (finishCommittedStage(entry) || removeOwned(entry, Removal::Leftover))
             ++removed;
     }
     return removed;

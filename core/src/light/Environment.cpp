@@ -63,7 +63,13 @@ Image resampledEnvironment(const Image& map, int width) {
 }
 
 Result<Image> loadEnvironment(const std::string& path) {
-    Result<Image> read = readImage(path);
+    // Radiance far beyond any sky (the sun's disc in an unclipped capture is about 1e5) makes the
+    // lighting's single-precision sums infinite, and the whole light black.
+    ImageReadOptions options;
+    options.maxMagnitude = 1e20f;
+    options.limitReason = "an environment's radiance may reach (the lighting's integrals would "
+                          "overflow and render black)";
+    Result<Image> read = readImage(path, options);
     if (!read)
         return read.error();
     const Image& in = *read;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string_view>
 
 namespace px {
 
@@ -51,7 +52,8 @@ struct Problems {
 
 Image loadImage(const std::string& file, int minChannels, const char* what,
                 const AssetLoadOptions& options, Problems& problems) {
-    ImageReadOptions read;
+    ImageReadOptions read =
+        std::string_view(what) == "colour map" ? colourMapReading() : ImageReadOptions{};
     read.maxSide = options.allowLarge ? (1 << 30) : 16384;
     Result<Image> image = readImage(file, read);
     if (!image) {

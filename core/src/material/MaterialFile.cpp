@@ -3,6 +3,7 @@
 #include "parallax/material/MaterialFile.h"
 
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/Inputs.h"
 #include "parallax/material/MapKind.h"
 
 #include <filesystem>
@@ -26,13 +27,37 @@ Result<Material> loadMaterial(const std::string& path, MaterialCheck check) {
     Result<std::string> text = readTextFile(path);
     if (!text)
         return text.error();
-    return parseMaterial(*text, path, check);
+    Result<Material> material = parseMaterial(*text, path, check);
+    if (!material)
+        return material;
+    if (Status s = noteMaterialMaps(*material, path); !s)
+        return s.error();
+    return material;
 }
 
 Status saveMaterial(const Material& material, const std::string& path) {
     if (std::vector<MaterialProblem> problems = validateMaterial(material); !problems.empty())
         return Error{formatProblems(problems, path)};
     return writeTextFile(path, materialToJson(material));
+}
+
+Status noteMaterialMaps(const Material& material, const std::string& materialFile) {
+    const MaterialMaps& maps = material.maps;
+    const std::pair<const std::string*, const char*> named[] = {{&maps.albedo, "albedo"},
+                                                                {&maps.height, "height"},
+                                                                {&maps.normal, "normal"},
+                                                                {&maps.cone, "cone"},
+                                                                {&maps.relaxedCone, "relaxed cone"},
+                                                                {&maps.ao, "AO"},
+                                                                {&maps.roughness, "roughness"},
+                                                                {&maps.metallic, "metallic"}};
+    const std::string owner = materialFile.empty() ? material.name : materialFile;
+    for (const auto& [map, what] : named) {
+        const std::string role = std::string("the ") + what + " map of " + owner;
+        if (Status s = noteInput(resolveMapPath(materialFile, *map), role); !s)
+            return s;
+    }
+    return success();
 }
 
 std::string resolveMapPath(const std::string& materialFile, const std::string& mapPath) {

@@ -316,8 +316,38 @@ void read(const json& root, Reader& reader, Material& material, MaterialCheck ch
 Result<Material> parseMaterial(std::string_view text, const std::string& source,
                                MaterialCheck check) {
     json root;
+    // A key given twice in one object: nlohmann keeps the last, another reader may keep the first,
+    // so which value the material has would depend on the program. Refused, with where.
+    struct Frame {
+        bool object = false;
+        std::string pointer, lastKey;
+        std::set<std::string> keys;
+    };
+    std::vector<Frame> frames;
+    std::string duplicate;
+    const json::parser_callback_t noDuplicates = [&](int, json::parse_event_t event, json& parsed) {
+        const auto open = [&](bool object) {
+            std::string pointer;
+            if (!frames.empty())
+                pointer = frames.back().pointer + "/" +
+                          (frames.back().object ? Reader::escapeKey(frames.back().lastKey) : "[]");
+            frames.push_back({object, pointer, {}, {}});
+        };
+        if (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start)
+            open(event == json::parse_event_t::object_start);
+        else if (event == json::parse_event_t::object_end ||
+                 event == json::parse_event_t::array_end)
+            frames.pop_back();
+        else if (event == json::parse_event_t::key && !frames.empty()) {
+            Frame& f = frames.back();
+            f.lastKey = parsed.get<std::string>();
+            if (!f.keys.insert(f.lastKey).second && duplicate.empty())
+                duplicate = f.pointer + "/" + Reader::escapeKey(f.lastKey);
+        }
+        return true;
+    };
     try {
-        root = json::parse(text.begin(), text.end());
+        root = json::parse(text.begin(), text.end(), noDuplicates);
     } catch (const json::exception& e) { // syntax errors, and numbers like 1e999
         std::string what = e.what();
         if (const auto close = what.find("] ");
@@ -325,6 +355,10 @@ Result<Material> parseMaterial(std::string_view text, const std::string& source,
             what = what.substr(close + 2);
         return fileError(source, "not valid JSON (" + what + ")");
     }
+    if (!duplicate.empty())
+        return fileError(source, duplicate + ": the key appears twice in one object (which value "
+                                             "counts would depend on the program reading it); "
+                                             "keep one");
     Reader reader;
     Material material;
     try {

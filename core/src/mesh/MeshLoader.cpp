@@ -1,6 +1,8 @@
 #include "parallax/mesh/MeshLoader.h"
 
+#include "MeshFileChecks.h"
 #include "parallax/io/FileExtension.h"
+#include "parallax/io/Inputs.h"
 #include "parallax/mesh/TangentFrames.h"
 
 #include <algorithm>
@@ -141,9 +143,25 @@ Result<LoadedMesh> loadMesh(const std::string& path, const MeshLoadOptions& opti
         return fileError(path, "is a folder, not a mesh");
     if (!isMeshFile(path))
         return fileError(path, "not a mesh file (the preview reads .obj, .gltf and .glb)");
+    // Before Assimp allocates anything: sizes against the file and the triangle limit, references
+    // under the mesh's root (MeshFileChecks.h).
+    Result<InputFile> file = InputFile::open(path);
+    if (!file)
+        return file.error();
+    Result<mesh::MeshScope> scope = mesh::MeshScope::make(path, options.root);
+    if (!scope)
+        return scope.error();
+    const Status checked = lowerExtension(path) == ".obj"
+                               ? mesh::checkObj(*file, *scope, options.maxTriangles)
+                               : mesh::checkGltf(*file, *scope, options.maxTriangles);
+    if (!checked)
+        return checked.error();
 
     bool cancelled = false;
     Assimp::Importer importer;
+    // Every file Assimp opens goes through the scope (the importer owns and deletes it).
+    auto* io = new mesh::ScopedIoSystem(*scope);
+    importer.SetIOHandler(io);
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     // The importer owns and deletes its progress handler.
@@ -163,8 +181,12 @@ Result<LoadedMesh> loadMesh(const std::string& path, const MeshLoadOptions& opti
     }
     if (cancelled)
         return Error{path + ": loading cancelled", ErrorKind::Cancelled, path};
+    if (!io->refusal().empty()) // Assimp may carry on without a file it was refused
+        return fileError(path, "cannot read it as a mesh: " + io->refusal());
     if (scene == nullptr) {
         std::string why = importer.GetErrorString();
+        if (!io->refusal().empty())
+            why += (why.empty() ? "" : ": ") + io->refusal();
         return fileError(path,
                          "cannot read it as a mesh: " + (why.empty() ? "unknown error" : why));
     }

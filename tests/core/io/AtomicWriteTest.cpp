@@ -1,6 +1,7 @@
 // The checked writer: a full disk (injected at byte N) is an error naming the file and the
 // reason, the previous file stays byte-identical and no temporary is left; the leftovers of a
-// killed run are removed by the next write; registered temporaries go on removeTemporariesNow().
+// killed run are removed by the next write, and only those (a writer in another PID namespace is
+// not taken for dead); registered temporaries go on removeTemporariesNow().
 
 #include "parallax/io/AtomicWrite.h"
 
@@ -9,6 +10,10 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cstdlib>
+#include <ctime>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,6 +33,7 @@ private slots:
     void fullDiskKeepsThePreviousFile();
     void folderAsTargetRefused();
     void missingFolderNamed();
+    void staleTemporariesOfDeadRunsRemoved_data();
     void staleTemporariesOfDeadRunsRemoved();
     void registeredTemporariesRemovedNewestFirst();
     void cancelledKindSurvivesAPrefix();
@@ -89,29 +95,93 @@ void AtomicWriteTest::missingFolderNamed() {
                                     " does not exist"));
 }
 
-void AtomicWriteTest::staleTemporariesOfDeadRunsRemoved() {
-    // A pid that has exited: a child that ends at once.
+namespace {
+
+pid_t deadPid() { // a pid that has exited: a child that ends at once
     const pid_t child = ::fork();
     if (child == 0)
         ::_exit(0);
     int status = 0;
     ::waitpid(child, &status, 0);
-    const std::string dead = std::to_string(child);
-    for (const std::string& name :
-         {".map.png.tmp" + dead + "-0", ".map.png.export-tmp" + dead + "-3"})
-        QVERIFY(writeFileAtomically(path(name.c_str()), "debris").ok());
-    fs::create_directory(path((".out.export-old" + dead + "-1").c_str()));
-    // Not leftovers: a live process's temporary, another file's, a look-alike name.
-    const std::string live = ".map.png.tmp" + std::to_string(::getppid()) + "-0";
-    for (const std::string& name : {live, std::string(".other.png.tmp") + dead + "-0",
-                                    std::string(".map.png.tmpx-0"), std::string("map.png.tmp1-0")})
-        QVERIFY(writeFileAtomically(path(name.c_str()), "keep").ok());
+    return child;
+}
 
-    QCOMPARE(removeStaleTemporaries(path("out")), 1);
-    QVERIFY(writeFileAtomically(path("map.png"), "new").ok());
-    QCOMPARE(entries(), (QStringList{QString::fromStdString(live), ".map.png.tmpx-0",
-                                     QString::fromStdString(".other.png.tmp" + dead + "-0"),
-                                     "map.png", "map.png.tmp1-0"}));
+// Holds an flock on `path` as a live writer (here or in another container) does.
+int holdLock(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd >= 0)
+        ::flock(fd, LOCK_SH);
+    return fd;
+}
+
+void makeOld(const std::string& path) {
+    const timespec times[2] = {{std::time(nullptr) - 7200, 0}, {std::time(nullptr) - 7200, 0}};
+    ::utimensat(AT_FDCWD, path.c_str(), times, AT_SYMLINK_NOFOLLOW);
+}
+
+} // namespace
+
+void AtomicWriteTest::staleTemporariesOfDeadRunsRemoved_data() {
+    QTest::addColumn<QString>("name"); // DEAD: a dead pid, LIVE: a live one, HOST: ours
+    QTest::addColumn<bool>("locked");  // a writer holds its lock
+    QTest::addColumn<bool>("old");     // unchanged for two hours
+    QTest::addColumn<bool>("removed");
+    QTest::newRow("our host, dead, free") << ".out.tmpDEAD-0.HOST" << false << false << true;
+    QTest::newRow("our host, dead, a folder")
+        << ".out.export-tmpDEAD-3.HOST/" << false << false << true;
+    QTest::newRow("our host, dead, a frames stage")
+        << ".out.set-tmpDEAD-1.HOST/" << false << false << true;
+    QTest::newRow("our host, dead pid but locked (an inherited descriptor)")
+        << ".out.tmpDEAD-0.HOST" << true << false << false;
+    QTest::newRow("our host, live") << ".out.tmpLIVE-0.HOST" << false << false << false;
+    QTest::newRow("another container, writing")
+        << ".out.tmpDEAD-0.0badf00d" << true << true << false;
+    QTest::newRow("another container, free but recent")
+        << ".out.tmpDEAD-0.0badf00d" << false << false << false;
+    QTest::newRow("another container, free and old beyond doubt")
+        << ".out.tmpDEAD-0.0badf00d" << false << true << true;
+    QTest::newRow("an older version's, recent") << ".out.tmpDEAD-0" << false << false << false;
+    QTest::newRow("an older version's, old") << ".out.export-oldDEAD-1/" << false << true << true;
+    QTest::newRow("another file's") << ".other.tmpDEAD-0.HOST" << false << true << false;
+    QTest::newRow("a look-alike") << ".out.tmpx-0.HOST" << false << true << false;
+    QTest::newRow("not hidden") << "out.tmpDEAD-0.HOST" << false << true << false;
+    QTest::newRow("a link named like one") << ".out.tmpDEAD-0.HOST@" << false << true << false;
+}
+
+// A leftover is removed only when its writer is provably gone: its lock free and, on this host,
+// its pid gone; elsewhere (another PID namespace, where our pids mean nothing) only once it is
+// old beyond doubt.
+void AtomicWriteTest::staleTemporariesOfDeadRunsRemoved() {
+    QFETCH(QString, name);
+    QFETCH(bool, locked);
+    QFETCH(bool, old);
+    QFETCH(bool, removed);
+    std::string entry = name.toStdString();
+    const auto replace = [&](const std::string& from, const std::string& to) {
+        if (const std::size_t at = entry.find(from); at != std::string::npos)
+            entry.replace(at, from.size(), to);
+    };
+    replace("DEAD", std::to_string(deadPid()));
+    replace("LIVE", std::to_string(::getppid()));
+    replace("HOST", hostToken());
+    const bool folder = entry.ends_with('/'), link = entry.ends_with('@');
+    if (folder || link)
+        entry.pop_back();
+    if (folder) {
+        fs::create_directory(path(entry.c_str()));
+        QVERIFY(writeFileAtomically(path((entry + "/inside.png").c_str()), "debris").ok());
+    } else if (link) {
+        fs::create_symlink("map.png", path(entry.c_str()));
+    } else {
+        QVERIFY(writeFileAtomically(path(entry.c_str()), "debris").ok());
+    }
+    const int fd = locked ? holdLock(path(entry.c_str())) : -1;
+    if (old)
+        makeOld(path(entry.c_str()));
+    QCOMPARE(removeStaleTemporaries(path("out")), removed ? 1 : 0);
+    QCOMPARE(fs::exists(fs::symlink_status(path(entry.c_str()))), !removed);
+    if (fd >= 0)
+        ::close(fd);
 }
 
 void AtomicWriteTest::registeredTemporariesRemovedNewestFirst() {

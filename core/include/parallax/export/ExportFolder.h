@@ -1,18 +1,24 @@
 #pragma once
-// An export folder written as a whole: files go into a hidden sibling of the target, which is
-// renamed into place only once everything is there. A failure, a crash or Ctrl-C leave the target
-// as it was (docs/conventions.md §6, for folders).
+// An export folder written as a whole (StagedSet.h): files go into a hidden sibling of the target,
+// which is renamed into place only once everything is there. A failure, a crash or Ctrl-C leave
+// the target as it was (docs/conventions.md §6, for folders). One export at a time writes a
+// folder (OutputLock.h): a second is refused, naming the first.
 //
 // Replacing an existing folder needs `force`, and even then only a folder that is empty or that a
 // previous export wrote (it holds the marker file kExportMarker): --force must never wipe a folder
 // of someone's other files because its name was mistyped. An earlier export is updated in place:
 // each new file is renamed over its old self, files the earlier export listed and this one does
 // not write are removed, and every other file (Unity .meta, Godot .import, a user's .mat) is kept,
-// since engines keep their references to the textures in those files.
+// since engines keep their references to the textures in those files. An update never replaces or
+// removes an input of the run (Inputs.h): an earlier export holding the material being exported,
+// or one of its maps, is refused before anything is written.
 
 #include "parallax/Result.h"
+#include "parallax/io/OutputLock.h"
+#include "parallax/io/StagedSet.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,10 +34,10 @@ public:
     // creates its parent folders and the staging folder. Errors name the target.
     static Result<ExportFolder> begin(const std::filesystem::path& target, bool force);
 
-    ExportFolder(ExportFolder&& other) noexcept;
+    ExportFolder(ExportFolder&& other) noexcept = default;
     ExportFolder& operator=(ExportFolder&&) = delete;
     ExportFolder(const ExportFolder&) = delete;
-    ~ExportFolder(); // removes the staging folder unless committed
+    ~ExportFolder() = default; // the stage goes unless committed, then the lock
 
     // Where to write a file of the export (a bare file name; no sub-folders).
     std::string pathFor(const std::string& name) const;
@@ -43,7 +49,7 @@ public:
         std::vector<std::string> kept;  // files of an earlier export's folder that no export wrote
     };
     // Writes the marker, then moves the staging folder into place, or its files into an earlier
-    // export (see above). On failure the target is as it was.
+    // export (see above), and lets go of the folder's lock. On failure the target is as it was.
     Result<Committed> commit(std::string_view description);
 
     const std::filesystem::path& target() const { return m_target; }
@@ -53,15 +59,17 @@ public:
     Error asTarget(const Error& error) const;
 
 private:
-    ExportFolder() = default;
+    ExportFolder(std::filesystem::path target, OutputLock lock, StagedSet stage)
+        : m_target(std::move(target)), m_lock(std::move(lock)), m_stage(std::move(stage)) {}
+    Result<Committed> commitStaged(std::string_view description);
     Result<Committed> updateInPlace();
     std::filesystem::path m_target;
-    std::filesystem::path m_staging;
+    std::optional<OutputLock> m_lock; // declared before the stage: released after it is gone,
+                                      // or once the export is in place
+    StagedSet m_stage;
     std::vector<std::string> m_files;
-    int m_stagingHandle = -1;               // registered for removal on Ctrl-C (Temporaries.h)
-    mutable std::vector<int> m_fileHandles; // the files in it, likewise
-    bool m_replace = false;                 // the target exists and is replaced
-    bool m_done = false;
+    std::vector<std::string> m_earlier; // the files the earlier export's marker lists
+    bool m_replace = false;             // the target exists and is replaced
 };
 
 } // namespace px

@@ -7,6 +7,7 @@
 #include "parallax/Result.h"
 #include "parallax/image/Image.h"
 
+#include <limits>
 #include <string>
 
 namespace px {
@@ -14,11 +15,20 @@ namespace px {
 struct ImageReadOptions {
     int maxSide = 16384;         // larger images are refused unless this is raised
     bool rejectNonFinite = true; // NaN/Inf texels are an error (count and first position)
+    // Texels of larger magnitude are an error naming the first, the limit and `limitReason`
+    // (why the reader cannot use them): a float file's 3e38 is finite, but overflows what the
+    // renderer computes from it, and one infinite texel turns a whole channel black.
+    float maxMagnitude = std::numeric_limits<float>::infinity();
+    std::string limitReason;
 };
+
+// The most a colour (albedo) map may hold as stored: the renderer decodes sRGB into 16-bit floats,
+// which overflow from about 100 on. Float files may stray a little past 0 to 1; not that far.
+ImageReadOptions colourMapReading();
 
 // Reads every channel of the first subimage as float, values as stored (8/16-bit scaled to
 // [0,1], float verbatim). Errors: missing or unreadable file, not an image, truncated data,
-// zero size, a side over maxSide, NaN/Inf texels.
+// zero size, a side over maxSide, NaN/Inf texels, texels over maxMagnitude.
 Result<Image> readImage(const std::string& path, const ImageReadOptions& options = {});
 
 enum class PixelFormat { UInt8, UInt16, Half, Float };

@@ -1,7 +1,9 @@
 #pragma once
-// Writing a numbered set of images as one: a turntable's frames. Each frame is made on demand,
-// staged under a temporary name beside its target and renamed only once every frame is written,
-// so a failure (or a cancel) leaves the previous set as it was and nothing behind.
+// Writing a numbered set of images as one: a turntable's frames. Each frame is made on demand and
+// staged in a hidden folder beside the first (StagedSet.h); the frames are moved into place only
+// once every one is written, so a failure, a cancel or Ctrl-C leaves the previous set as it was and
+// nothing behind, and a kill during the moves is finished by the next run. One writer at a time
+// (OutputLock.h). Frames of an earlier, longer set past the new count are left as they were.
 
 #include "parallax/Result.h"
 #include "parallax/image/ImageFile.h"
@@ -15,7 +17,9 @@ namespace px {
 // OUT.png -> OUT-000.png, OUT-001.png, ... (at least three digits, more when `count` needs them).
 std::vector<std::string> numberedFiles(const std::string& out, int count);
 
-// Writes frame(i) to files[i] for every i. Errors name the target file, never a temporary.
+// Writes frame(i) to files[i] (all in one folder) for every i. Errors name the target file, never
+// a temporary; a target that is an input, a folder, a link or a special file is refused before
+// the first frame is made.
 Status writeImageSet(const std::vector<std::string>& files,
                      const std::function<Result<Image>(int)>& frame,
                      const ImageWriteOptions& options);

@@ -12,14 +12,18 @@
 
 namespace px {
 
-// A hidden name beside `target`, unique to this process and call (".NAME.tmpPID-N").
+// A hidden name beside `target`, unique to this process and call (".NAME.tmpPID-N.HOST",
+// Temporaries.h).
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 
-// Renames `temp` over `target`; on failure removes `temp` and says why.
+// Renames `temp` over `target` through the output gate (OutputGate.h); on failure removes `temp`
+// and says why.
 Status commitTemporary(const std::filesystem::path& temp, const std::filesystem::path& target);
 
-// Writes `contents` to `path` atomically: temporary file, checked writes, fsync, rename.
-// Removes the leftovers of killed runs on the same target first (see Temporaries.h).
+// Writes `contents` to `path` atomically: temporary file, checked writes, fsync, rename. The
+// output gate refuses a target that is an input, a folder, a link or a special file before the
+// temporary is made. Removes the leftovers of killed runs on the same target first (see
+// Temporaries.h).
 // Test hook: PX_TEST_FAIL_WRITE_AT=N makes the write fail with ENOSPC once N bytes are written
 // (the fault suite's full disk where it cannot mount a small tmpfs).
 Status writeFileAtomically(const std::string& path, std::string_view contents);
@@ -27,8 +31,9 @@ Status writeFileAtomically(const std::string& path, std::string_view contents);
 // Writes `contents` to `path` atomically (text files: JSON, CSV, shaders, notes).
 Status writeTextFile(const std::string& path, std::string_view contents);
 
-// Reads a whole file; errors name it.
-Result<std::string> readTextFile(const std::string& path);
+// Reads a whole file (through InputFile: recorded as an input unless `record` is false, for the
+// run's own files); errors name it.
+Result<std::string> readTextFile(const std::string& path, bool record = true);
 
 // The system's reason for errno `code`, e.g. "No space left on device".
 std::string systemReason(int code);

@@ -68,6 +68,10 @@ Status saveMaterial(const Material& material, const std::string& path);
 // The file a map path names, for a material stored in `materialFile` ("" when the map is absent).
 std::string resolveMapPath(const std::string& materialFile, const std::string& mapPath);
 
+// Records every map `material` names (resolved against `materialFile`) as an input of the run
+// (parallax/io/Inputs.h), loaded or not: no output may replace one. loadMaterial does it.
+Status noteMaterialMaps(const Material& material, const std::string& materialFile);
+
 // Rewrites relative map paths so they name the same files from a material stored at `toFile`
 // instead of `fromFile` (Save As into another folder). Absolute paths are kept.
 MaterialMaps rebaseMapPaths(const MaterialMaps& maps, const std::string& fromFile,

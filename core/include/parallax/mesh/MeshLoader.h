@@ -22,6 +22,9 @@ constexpr std::size_t kDefaultMaxMeshTriangles = 2'000'000;
 struct MeshLoadOptions {
     int uvSet = 0; // which texture coordinate set carries the material
     std::size_t maxTriangles = kDefaultMaxMeshTriangles;
+    // The folder every file the mesh refers to (glTF buffers and images, OBJ material libraries
+    // and their textures) must lie under; empty: the mesh's own folder.
+    std::string root;
     // Called with 0 to 1 while the file is read; returning false cancels the load.
     std::function<bool(float)> progress;
 };
@@ -43,7 +46,9 @@ struct LoadedMesh {
 
 // Errors name the file and the problem: missing or unreadable file, not a mesh, no triangles, no
 // uv (or no set `uvSet`), a non-finite position, normal or uv (with the vertex), more triangles
-// than the limit, every triangle degenerate, a cancelled load (ErrorKind::Cancelled).
+// than the limit, every triangle degenerate, a cancelled load (ErrorKind::Cancelled); before
+// Assimp reads anything: a size the file claims but does not hold (GLB chunks, glTF buffers,
+// views, accessors), a glTF index past its vertices, a reference outside `root`.
 // Degenerate triangles (zero area in position or uv) are dropped and counted in `notes`.
 Result<LoadedMesh> loadMesh(const std::string& path, const MeshLoadOptions& options = {});
 
