@@ -7,7 +7,7 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/ConeCells.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CellPyramid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/QuickConeBaker.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/SectorPyramid.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/FallPyramid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/EdgeStrips.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RelaxedConeBaker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ConeMapReference.cpp
