@@ -4,3 +4,4 @@
 #include "bake/cells.glsl"
 #include "bake/strips.glsl"
 #include "bake/relaxed.glsl"
+#include "bake/quick.glsl"

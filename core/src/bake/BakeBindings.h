@@ -2,6 +2,7 @@
 // What every C++ compilation of the bake kernels (shaders/bake/) binds: the uniforms and the reads
 // the GPU's buffers stand for. BakeKernel derives from it.
 
+#include "bake/CellPyramid.h"
 #include "bake/EdgeStrips.h"
 #include "bake/FallPyramid.h"
 #include "parallax/heightfield/HeightField.h"
@@ -17,12 +18,14 @@ struct BakeBindings {
     bool pxBakeRepeat = true;
     glm::vec2 pxBakeInv{1.0f, 1.0f};
     float pxBakeMax = 0.0f;
+    int pxCellLevels = 0;
     int pxFallTop = 0;
     float pxFallUnit = 0.0f;
 
     const HeightField* field = nullptr;
     const FallPyramid* fall = nullptr;
     const EdgeStrips* strips = nullptr;
+    const CellPyramid* cells = nullptr;
 
     BakeBindings() = default;
     BakeBindings(const HeightField& f, WrapMode wrap)
@@ -31,6 +34,9 @@ struct BakeBindings {
           pxBakeMax(f.maxHeight()), field(&f) {}
 
     float pxBakeTexel(glm::ivec2 t) const { return field->at(t.x, t.y); }
+
+    glm::ivec2 pxCellSize(int level) const { return cells->size(level); }
+    float pxCellMax(int level, glm::ivec2 n) const { return cells->at(level, n.x, n.y); }
 
     glm::ivec2 pxFallSize(int level) const { return fall->size(level); }
     glm::uvec3 pxFallNode(int level, glm::ivec2 n) const { return fall->node(level, n); }

@@ -4,7 +4,6 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/BakeEncoding.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MaxLevel.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MaxMipPyramid.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/ConeCells.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CellPyramid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/QuickConeBaker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/FallPyramid.cpp

@@ -117,7 +117,7 @@ void RelaxedConeMapTest::fastMatchesRingScan_data() {
     }
 }
 
-// Every cone is the least bound of one cell (ConeCells in shaders/bake/cells.glsl), which does not
+// Every cone is the least bound of one cell (shaders/bake/cells.glsl), which does not
 // depend on the order cells are met in: the pyramid search, seeded or not, finds the ring scan's
 // cones to the bit. Relaxed cones are never narrower than the conservative ones (the oracle's
 // within the per-cell tolerance of 3%).
