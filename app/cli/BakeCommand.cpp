@@ -14,6 +14,7 @@
 #include "parallax/bake/NormalMapBaker.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/material/MaterialNames.h"
+#include "parallax/render/GpuConeBaker.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -36,6 +37,7 @@ struct BakeOptions {
     std::optional<int> bits;
     std::string layout = "atlas";
     int level = -1;
+    bool gpu = false;
     std::string out;
 };
 
@@ -79,7 +81,7 @@ Status checkApplicable(const BakeOptions& o, const CLI::App& cmd) {
     for (const Rule& r :
          {Rule{"--scale", normal}, Rule{"--filter", normal}, Rule{"--green", normal},
           Rule{"--normal", normal}, Rule{"--normal-green", normal}, Rule{"--layout", pyramid},
-          Rule{"--level", pyramid}}) {
+          Rule{"--level", pyramid}, Rule{"--gpu", !normal && !pyramid}}) {
         if (!r.allowed && cmd.count(r.option) > 0)
             return Error{std::string(r.option) + " does not apply to bake " + o.kind};
     }
@@ -137,7 +139,19 @@ Result<Image> bakeCones(const BakeOptions& o, PixelFormat format, const BakeCont
     // Bake from the heights as the file will store them, so that R and G agree.
     const HeightField field = roundHeightsUp(*source, format);
     const ConeKind kind = o.kind == "cone" ? ConeKind::Conservative : ConeKind::Relaxed;
-    Result<ConeMap> cones = bakeConeMap(field, o.height.wrapMode(), kind, control);
+    // --gpu: the same kernels on a GPU context where there is one, else on the CPU (said why).
+    Result<ConeMap> cones = Error{""};
+    if (o.gpu) {
+        GpuBakeInfo info;
+        cones = bakeConeMapHeadless(field, o.height.wrapMode(), kind, control, &info);
+        if (cones)
+            std::fprintf(stderr, "baked on the GPU (%s) in %.0f ms\n", info.renderer.c_str(),
+                         info.milliseconds);
+        else if (!isCancelled(cones.error()))
+            std::fprintf(stderr, "note: baking on the CPU: %s\n", cones.error().message.c_str());
+    }
+    if (!o.gpu || (!cones && !isCancelled(cones.error())))
+        cones = bakeConeMap(field, o.height.wrapMode(), kind, control);
     if (!cones)
         return cones.error();
     return encodeConeMap(field, *cones, format);
@@ -214,6 +228,9 @@ Action addBakeCommand(CLI::App& app) {
                     "pyramid: atlas (every level stacked, for the GPU) or chain (for looking at)")
         ->check(CLI::IsMember({"atlas", "chain"}));
     cmd->add_option("--level", o->level, "pyramid: write one level only")->check(CLI::Range(0, 64));
+    cmd->add_flag("--gpu", o->gpu,
+                  "cone, relaxed-cone: bake on the GPU (the same kernels; the CPU where no "
+                  "OpenGL 4.3 context can be made)");
     cmd->add_option("--out", o->out, "Output image: .png, .tif or .exr (format from the extension)")
         ->required();
     return [o, cmd] { return runBake(*o, *cmd); };

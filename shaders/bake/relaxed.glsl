@@ -116,6 +116,12 @@ bool pxRelaxedFalls(ivec4 g, int x0, int x1, int y0, int y1) {
 // the tile box's nearest point, its lowest apex and its widest cone, the node's priority (the
 // smaller the nearer; PX_BAKE_FAR: it narrows no cone of the tile). Nodes far from the tile are
 // so skipped for all of its apexes at once.
+// The tile box's squared distance to the last node pxRelaxedTileBound() passed, and whether the
+// node is many tiles away (PX_FAR_TILES tile sizes or more along an axis).
+float pxTileD2;
+bool pxTileFar;
+#define PX_FAR_TILES 8
+
 float pxRelaxedTileBound(ivec4 g, ivec4 r, float m) {
     PX_PRECISE float rise = m - pxTileHMin;
     if (!(rise > 0.0f))
@@ -130,16 +136,32 @@ float pxRelaxedTileBound(ivec4 g, ivec4 r, float m) {
     PX_PRECISE float reach2 = pxTileCMax * pxTileCMax * rise * rise * PX_NODE_MARGIN;
     if (d2 >= reach2 || !pxRelaxedFalls(g, x0, x1, y0, y1))
         return PX_BAKE_FAR;
+    pxTileD2 = d2;
+    // (Cells a period or more away from an apex are skipped at the leaves.)
+    pxTileFar = max(gapX, gapY) >= PX_FAR_TILES * PX_TILE_W;
     return d2 / reach2;
 }
 
 // The apexes of `mask` that node n (level >= 1, gradients g, rectangle r, highest corner m) may
-// narrow: rising above the apex within its cone's reach, and falling away from it.
-uint pxRelaxedOpen(ivec4 n, ivec4 g, ivec4 r, float m, uint mask) {
+// narrow: rising above the apex within its cone's reach, and falling away from it. `tileD2` is
+// the squared distance from the tile's box (at most each apex's): for a node many tiles away the
+// apexes' own distances and directions differ little from the box's, so only their heights and
+// cones are compared, against it (a looser test, never a wrong skip).
+uint pxRelaxedOpen(ivec4 n, ivec4 g, ivec4 r, float m, uint mask, float tileD2, bool far) {
+    uint open = 0u;
+    if (far) {
+        for (uint bits = mask; bits != 0u; bits &= bits - 1u) {
+            int k = findLSB(bits);
+            PX_PRECISE float rise = m - pxTileH[k];
+            PX_PRECISE float reach2 = pxTileReach[k] * rise * rise;
+            if (rise > 0.0f && tileD2 < reach2)
+                open |= 1u << uint(k);
+        }
+        return open;
+    }
     // Only a neighbouring period's node can be a period or more away from an apex.
     bool periods = pxBakeRepeat && n.w != 4;
     int rx0 = r.x, rx1 = r.y, ry0 = r.z, ry1 = r.w;
-    uint open = 0u;
     for (uint bits = mask; bits != 0u; bits &= bits - 1u) {
         int k = findLSB(bits);
         PX_PRECISE float rise = m - pxTileH[k];
@@ -209,7 +231,7 @@ int pxRelaxedPush(ivec4 n, uint mask, int first, int top) {
     float priority = pxRelaxedTileBound(g, r, m);
     if (priority == PX_BAKE_FAR)
         return top;
-    uint open = pxRelaxedOpen(n, g, r, m, mask);
+    uint open = pxRelaxedOpen(n, g, r, m, mask, pxTileD2, pxTileFar);
     if (open == 0u)
         return top;
     int at = top;

@@ -13,6 +13,8 @@
 #include "panels/TechniquePanel.h"
 #include "panels/ViewPanel.h"
 #include "panels/WorkPrecisionView.h"
+#include "parallax/bake/ConeMapBaker.h"
+#include "parallax/bake/ConeMapReference.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
@@ -33,6 +35,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QStatusBar>
 #include <QSpinBox>
 #include <QToolButton>
 #include <array>
@@ -546,6 +549,35 @@ private slots:
         w->document()->undoStack()->undo(); // the bake
         QVERIFY(!w->document()->state().hasMap(MapKind::Cone));
         QVERIFY(!combo->isAvailable(Technique::Cone));
+    }
+
+    // Cone bakes go to the GPU (a context sharing the viewports', on the bake's worker) and give
+    // the CPU's map; the view keeps drawing while they run (dispatches of a few milliseconds).
+    void coneBakesRunOnTheGpuWhileTheViewDraws() {
+        auto w = makeWindow(1, 512);
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        std::vector<BakeOutcome> finished;
+        connect(w->baker(), &BakeRunner::finished, this,
+                [&finished](const BakeOutcome& o) { finished.push_back(o); });
+        w->startBake(BakeKind::RelaxedCone);
+        QVERIFY(w->baker()->isBusy());
+        const int before = preview->framesRendered();
+        QTRY_VERIFY_WITH_TIMEOUT((preview->update(), preview->framesRendered() >= before + 3 ||
+                                                          !w->baker()->isBusy()),
+                                 60000);
+        QVERIFY2(w->baker()->isBusy(), "the bake ended before the view drew three frames");
+        QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 120000);
+        QCOMPARE(finished.size(), std::size_t(1));
+        const BakeOutcome& outcome = finished.front();
+        QVERIFY2(outcome.error.isEmpty(), qPrintable(outcome.error));
+        QVERIFY2(!outcome.gpu.isEmpty(), "the relaxed cone map was not baked on the GPU");
+        ConeMap cpu = bakeConeMap(outcome.request.source->height, outcome.request.wrap,
+                                  ConeKind::Relaxed);
+        quantiseDown(cpu, 65535);
+        QVERIFY(outcome.cone.sqrtRatio == cpu.sqrtRatio);
+        QVERIFY(w->statusBar()->currentMessage().contains("on the GPU"));
     }
 
     void cancelledBakeChangesNothing() {

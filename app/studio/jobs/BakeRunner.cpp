@@ -1,10 +1,14 @@
 #include "jobs/BakeRunner.h"
 
 #include "jobs/BackgroundPriority.h"
+#include "jobs/GpuConeBake.h"
+#include "jobs/SharedGlContext.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/ConeMapReference.h"
 
 #include <QMetaObject>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
 #include <QPointer>
 #include <QtConcurrent/QtConcurrentRun>
 #include <chrono>
@@ -26,7 +30,8 @@ QString bakeTitle(BakeKind kind) {
 
 namespace {
 
-BakeOutcome runBake(const BakeRequest& request, const BakeControl& control) {
+BakeOutcome runBake(const BakeRequest& request, const BakeControl& control,
+                    const std::shared_ptr<QOffscreenSurface>& surface) {
     lowerThisThreadsPriority(); // a pool thread: background work only
     BakeOutcome outcome;
     outcome.request = request;
@@ -43,7 +48,12 @@ BakeOutcome runBake(const BakeRequest& request, const BakeControl& control) {
     } else {
         const ConeKind kind =
             request.kind == BakeKind::Cone ? ConeKind::Conservative : ConeKind::Relaxed;
-        Result<ConeMap> cone = bakeConeMap(field, request.wrap, kind, control);
+        QString gpu;
+        Result<ConeMap> cone = bakeConeOnGpu(field, request.wrap, kind, control, surface, &gpu);
+        if (cone)
+            outcome.gpu = gpu;
+        else if (!isCancelled(cone.error())) // no GPU context here: the same map on the CPU
+            cone = bakeConeMap(field, request.wrap, kind, control);
         if (cone) {
             // 16 bits, a 16-bit file's precision (never wider): with a 16-bit height the GPU
             // then holds the cone map in RG16, half of RG32F (an 8192² map: 256 MiB less).
@@ -124,8 +134,13 @@ void BakeRunner::next() {
     const BakeRequest request = *m_runningRequest;
     // The cancel flag lives as long as the job: the job holds its own reference.
     std::shared_ptr<std::atomic<bool>> flag = m_cancel;
-    m_watcher.setFuture(
-        QtConcurrent::run([request, control, flag] { return runBake(request, control); }));
+    // Cone bakes go to the GPU where the viewports share their context (a surface for the
+    // worker's is made here, on the GUI thread, as Qt requires).
+    std::shared_ptr<QOffscreenSurface> surface;
+    if (kind != BakeKind::Normal && QOpenGLContext::globalShareContext())
+        surface = workerSurface();
+    m_watcher.setFuture(QtConcurrent::run(
+        [request, control, flag, surface] { return runBake(request, control, surface); }));
 }
 
 void BakeRunner::done() {

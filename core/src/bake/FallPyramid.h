@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <utility>
 #include <vector>
 
 namespace px::bake {
@@ -40,6 +41,8 @@ public:
     // level in words.
     const std::vector<std::uint32_t>& words() const { return m_nodes; }
     std::size_t offset(int level) const { return m_offset[static_cast<std::size_t>(level)]; }
+    // The words, moved out (the pyramid is then empty): for the GPU's upload.
+    std::vector<std::uint32_t> takeWords() { return std::move(m_nodes); }
     // The height of a stored highest corner's unit (about the map's maximum / 65535): the
     // kernel decodes q as float(q) * unit(), at least the corner.
     float unit() const { return m_unit; }

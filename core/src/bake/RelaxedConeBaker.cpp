@@ -19,7 +19,7 @@ namespace {
 constexpr int kTileW = PX_TILE_W, kTileH = PX_TILE_H;
 
 // A tile row's share of the progress bar against one cell row of the pyramid's set-up.
-constexpr int kTileRowWork = 100;
+constexpr int kTileRowWork = 200;
 
 } // namespace
 

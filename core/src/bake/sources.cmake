@@ -12,6 +12,7 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/ConeMapReference.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ConeMapFinish.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ConeMapBaker.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ConeBakeInputs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/NormalMapBaker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/NormalMapConversion.cpp
 )
