@@ -11,7 +11,6 @@
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialAssets.h"
 #include "parallax/material/MaterialFile.h"
-#include "parallax/bake/ConeMapBaker.h"
 #include "parallax/render/GpuConeBaker.h"
 
 #include <algorithm>
@@ -193,16 +192,13 @@ int runRecommend(const RecommendOptions& o) {
     config.gpuUnavailable = "recommend measures fetches and CPU time; time its choice with "
                             "'parallax-cli bench --gpu'";
     if (o.bakeGpu) {
-        // The same kernels on the GPU; where no context can be made, the CPU (said once).
+        // The same kernels on the GPU; no context is an error, as for bake --gpu.
         config.coneBaker = [](const HeightField& f, WrapMode w, ConeKind k,
                               const BakeControl& c) -> Result<ConeMap> {
             Result<ConeMap> gpu = bakeConeMapHeadless(f, w, k, c);
-            if (gpu || isCancelled(gpu.error()))
-                return gpu;
-            static bool said = false;
-            if (!std::exchange(said, true))
-                std::fprintf(stderr, "note: baking on the CPU: %s\n", gpu.error().message.c_str());
-            return bakeConeMap(f, w, k, c);
+            if (!gpu && !isCancelled(gpu.error()))
+                return Error{"--bake-gpu: " + gpu.error().message};
+            return gpu;
         };
     }
     double tiling = 1.0;
@@ -346,7 +342,7 @@ Action addRecommendCommand(CLI::App& app) {
                   "Also the fewest Unity HDRP parallax-occlusion steps that meet it");
     o->cache.addTo(*cmd);
     cmd->add_flag("--bake-gpu", o->bakeGpu,
-                  "Bake the cone maps it needs on the GPU (the same maps; the CPU where no "
+                  "Bake the cone maps it needs on the GPU (the same maps; an error where no "
                   "OpenGL 4.3 context can be made)");
     cmd->add_flag("--json", o->json, "Write JSON instead of text");
     cmd->add_option("--out", o->out, "Output file (default: standard output)");

@@ -15,6 +15,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <random>
 
 using namespace px;
@@ -52,10 +53,18 @@ class GpuConeBakeTest : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { QVERIFY(test::glContext()); }
+    void initTestCase() {
+        QVERIFY(test::glContext());
+        m_baker = std::make_unique<GpuConeBaker>();
+    }
+    void cleanupTestCase() { m_baker.reset(); }
     void gpuEqualsCpu_data();
     void gpuEqualsCpu();
     void slicesReportProgressAndCancel();
+
+private:
+    // One baker for every row: its programs are compiled once (llvmpipe takes seconds a program).
+    std::unique_ptr<GpuConeBaker> m_baker;
 };
 
 void GpuConeBakeTest::gpuEqualsCpu_data() {
@@ -85,7 +94,7 @@ void GpuConeBakeTest::gpuEqualsCpu() {
     const ConeKind cone = kind ? ConeKind::Relaxed : ConeKind::Conservative;
     const HeightField field = makeProceduralMap(c.map, c.width, c.height, runSeed());
     const ConeMap cpu = bakeConeMap(field, mode, cone);
-    GpuConeBaker baker;
+    GpuConeBaker& baker = *m_baker;
     baker.sliceMilliseconds = 0.01; // many slices: their seams must not show
     GpuBakeInfo info;
     Result<ConeMap> gpu = baker.bake(field, mode, cone, {}, &info);
@@ -115,7 +124,7 @@ void GpuConeBakeTest::gpuEqualsCpu() {
 void GpuConeBakeTest::slicesReportProgressAndCancel() {
     const HeightField field = makeProceduralMap(ProceduralMap::Noise, 64, 48, 2);
     for (ConeKind kind : {ConeKind::Conservative, ConeKind::Relaxed}) {
-        GpuConeBaker baker;
+        GpuConeBaker& baker = *m_baker;
         baker.sliceMilliseconds = 0.01;
         std::vector<float> seen;
         BakeControl control;
