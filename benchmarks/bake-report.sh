@@ -120,7 +120,7 @@ bake() { # map size kind baker binary [--gpu]
     if [ "$baker" = gpu ]; then
         grep -q "baked on the GPU" "$work/stderr.txt" ||
             fail "bake --gpu did not bake on the GPU: $(tail -n 3 "$work/stderr.txt")"
-        gl=$(grep -o "baked on the GPU ([^)]*)" "$work/stderr.txt" | head -n 1)
+        gl=$(sed -n 's/^baked on the GPU (\(.*\)) in [0-9]* ms$/\1/p' "$work/stderr.txt" | head -n 1)
     fi
     read -r wall user sys rss <"$t"
     # The mean cone ratio c = G^2 of the written map (oiiotool's --stats where it is installed).
@@ -164,7 +164,7 @@ done
     echo "- machine: $(nproc) CPUs, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')," \
         "$(awk '/MemTotal/ {printf "%.0f GiB", $2 / 1048576}' /proc/meminfo)"
     echo "- load average (1, 5, 15 min): $loadStart at the start, $(load) at the end"
-    [ -n "$gl" ] && echo "- GPU: ${gl#baked on the GPU }"
+    [ -n "$gl" ] && echo "- GPU: $gl"
     echo
     echo "| map | size | kind | baker | wall (median) | CPU (median) | peak RSS | mean cone ratio | new vs baseline (wall, CPU) |"
     echo "|---|---|---|---|---|---|---|---|---|"
