@@ -9,7 +9,7 @@
 #   benchmarks/bake-report.sh [--build DIR] [--baseline REF|none] [--baseline-cli FILE]
 #                             [--sizes 512,1024,2048] [--maps bricks,noise]
 #                             [--kinds cone,relaxed-cone] [--repeats N] [--gpu] [--gpu-only]
-#                             [--baseline-max-size N] [--out DIR]
+#                             [--baseline-max-size N] [--recommend] [--out DIR]
 #
 # --build DIR           an existing build folder (else build-bake-report/ is configured and built,
 #                       RelWithDebInfo, as the project's figures are measured)
@@ -20,6 +20,8 @@
 # --gpu                 also bake with --gpu (a GPU's EGL device where there is one, see
 #                       PX_EGL_PLATFORM; llvmpipe otherwise)
 # --gpu-only            only `bake --gpu` (the GPU growth table: docs/bench/)
+# --recommend           also a cold `recommend --height MAP --cache NEW_DIR` per map and size
+#                       (baker "recommend", "recommend-baseline"; it bakes both cone maps)
 # --out DIR             where the report goes (default bake-report/); an existing folder is
 #                       replaced only if it holds an earlier report
 #
@@ -39,6 +41,7 @@ repeats=2
 gpu=0
 cpu=1
 baselineMax=4096
+recommend=0
 out="bake-report"
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -52,6 +55,7 @@ while [ $# -gt 0 ]; do
     --repeats) repeats=${2:?--repeats needs a count}; shift 2 ;;
     --gpu) gpu=1; shift ;;
     --gpu-only) gpu=1; cpu=0; baseline=none; shift ;;
+    --recommend) recommend=1; shift ;;
     --out) out=${2:?--out needs a folder}; shift 2 ;;
     -h | --help) sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "error: unknown option $1 (see --help)" >&2; exit 2 ;;
@@ -126,12 +130,25 @@ bake() { # map size kind baker binary [--gpu]
     # The mean cone ratio c = G^2 of the written map (oiiotool's --stats where it is installed).
     local mean=""
     if command -v oiiotool >/dev/null; then
-        mean=$(oiiotool "$res" --ch G --mul "$res" --ch G --stats 2>/dev/null |
+        mean=$(oiiotool "$res" --ch G --dup --mul --printstats 2>/dev/null |
             sed -n 's/.*Stats Avg: *\([0-9.e+-]*\).*/\1/p' | head -n 1 || true)
     fi
     echo "$map,$size,$kind,$baker,$run,$wall,$user,$sys,$((rss / 1024)),$mean" >>"$csv"
     printf '  %-8s %-12s %-6s %5s²  %7.2f s wall  %7.2f s CPU  %6d MiB\n' "$baker" "$kind" "$map" \
         "$size" "$wall" "$(awk "BEGIN {print $user + $sys}")" "$((rss / 1024))"
+}
+
+# A cold recommend (a new cone cache): appends a CSV row (kind "recommend").
+coldRecommend() { # map size baker binary run
+    local map=$1 size=$2 baker=$3 bin=$4 run=$5 t="$work/time.txt"
+    rm -rf "$work/cache"
+    /usr/bin/time -f "%e %U %S %M" -o "$t" "$bin" recommend --height "$work/$map-$size.exr" \
+        --cache "$work/cache" --out "$work/recommend-$baker.txt" 2>"$work/stderr.txt" ||
+        fail "$baker: recommend on $map $size failed: $(tail -n 3 "$work/stderr.txt")"
+    read -r wall user sys rss <"$t"
+    echo "$map,$size,recommend,$baker,$run,$wall,$user,$sys,$((rss / 1024))," >>"$csv"
+    printf '  %-8s %-12s %-6s %5s²  %7.2f s wall  %7.2f s CPU  %6d MiB\n' "$baker" recommend \
+        "$map" "$size" "$wall" "$(awk "BEGIN {print $user + $sys}")" "$((rss / 1024))"
 }
 
 IFS=, read -r -a sizeList <<<"$sizes"
@@ -149,6 +166,15 @@ for size in "${sizeList[@]}"; do
                 [ "$gpu" = 1 ] && bake "$map" "$size" "$kind" gpu "$cli" "$run" --gpu
             done
         done
+        if [ "$recommend" = 1 ]; then
+            for run in $(seq 1 "$repeats"); do
+                coldRecommend "$map" "$size" new "$cli" "$run"
+                [ -n "$base" ] && [ "$size" -le "$baselineMax" ] &&
+                    coldRecommend "$map" "$size" baseline "$base" "$run"
+            done
+            cmp -s "$work/recommend-new.txt" "$work/recommend-baseline.txt" ||
+                echo "  note: recommend's answers differ on $map $size (new against baseline)"
+        fi
         rm -f "$work/$map-$size.exr"
     done
 done

@@ -561,6 +561,9 @@ private slots:
         std::vector<BakeOutcome> finished;
         connect(w->baker(), &BakeRunner::finished, this,
                 [&finished](const BakeOutcome& o) { finished.push_back(o); });
+        std::vector<double> progress; // reported between the GPU's slices, in order
+        connect(w->baker(), &BakeRunner::progress, this,
+                [&progress](BakeKind, double f) { progress.push_back(f); });
         w->startBake(BakeKind::RelaxedCone);
         QVERIFY(w->baker()->isBusy());
         const int before = preview->framesRendered();
@@ -573,6 +576,9 @@ private slots:
         const BakeOutcome& outcome = finished.front();
         QVERIFY2(outcome.error.isEmpty(), qPrintable(outcome.error));
         QVERIFY2(!outcome.gpu.isEmpty(), "the relaxed cone map was not baked on the GPU");
+        QVERIFY(progress.size() >= 3);
+        QVERIFY(std::is_sorted(progress.begin(), progress.end()));
+        QVERIFY(progress.front() < 0.5 && progress.back() > 0.9);
         ConeMap cpu = bakeConeMap(outcome.request.source->height, outcome.request.wrap,
                                   ConeKind::Relaxed);
         quantiseDown(cpu, 65535);
