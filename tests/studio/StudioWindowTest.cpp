@@ -35,8 +35,8 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
-#include <QStatusBar>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QToolButton>
 #include <array>
 
@@ -567,9 +567,9 @@ private slots:
         w->startBake(BakeKind::RelaxedCone);
         QVERIFY(w->baker()->isBusy());
         const int before = preview->framesRendered();
-        QTRY_VERIFY_WITH_TIMEOUT((preview->update(), preview->framesRendered() >= before + 3 ||
-                                                          !w->baker()->isBusy()),
-                                 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (preview->update(), preview->framesRendered() >= before + 3 || !w->baker()->isBusy()),
+            60000);
         QVERIFY2(w->baker()->isBusy(), "the bake ended before the view drew three frames");
         QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 120000);
         QCOMPARE(finished.size(), std::size_t(1));
@@ -579,8 +579,8 @@ private slots:
         QVERIFY(progress.size() >= 3);
         QVERIFY(std::is_sorted(progress.begin(), progress.end()));
         QVERIFY(progress.front() < 0.5 && progress.back() > 0.9);
-        ConeMap cpu = bakeConeMap(outcome.request.source->height, outcome.request.wrap,
-                                  ConeKind::Relaxed);
+        ConeMap cpu =
+            bakeConeMap(outcome.request.source->height, outcome.request.wrap, ConeKind::Relaxed);
         quantiseDown(cpu, 65535);
         QVERIFY(outcome.cone.sqrtRatio == cpu.sqrtRatio);
         QVERIFY(w->statusBar()->currentMessage().contains("on the GPU"));

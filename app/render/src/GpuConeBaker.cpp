@@ -33,8 +33,8 @@ Result<gl::Object> storage(int binding, const void* data, std::size_t bytes) {
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largest);
     if (static_cast<GLint64>(bytes) > largest)
         return Error{"the map needs a " + std::to_string(bytes >> 20) +
-                     " MiB storage buffer, more than this GPU's " +
-                     std::to_string(largest >> 20) + " MiB: bake it on the CPU"};
+                     " MiB storage buffer, more than this GPU's " + std::to_string(largest >> 20) +
+                     " MiB: bake it on the CPU"};
     gl::Object buffer(gl::ObjectKind::Buffer);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());
     // An empty buffer is still bound (a program's unused block must have one).
@@ -146,8 +146,8 @@ Result<ConeMap> GpuConeBaker::bakeRaw(const HeightField& field, WrapMode wrap, C
     // Work items: 4 x 4 tiles (relaxed) or texels (quick), dispatched in slices that grow or
     // shrink towards sliceMilliseconds.
     const bool relaxed = kind == ConeKind::Relaxed;
-    const int items = relaxed ? ((field.width + 3) / 4) * ((field.height + 3) / 4)
-                              : static_cast<int>(texels);
+    const int items =
+        relaxed ? ((field.width + 3) / 4) * ((field.height + 3) / 4) : static_cast<int>(texels);
     const GLint first = glGetUniformLocation(id, "pxBakeFirst");
     const GLint end = glGetUniformLocation(id, "pxBakeEnd");
     int slice = kBakeLocalSize; // one work group first, then as many as the time allows
@@ -159,8 +159,7 @@ Result<ConeMap> GpuConeBaker::bakeRaw(const HeightField& field, WrapMode wrap, C
         glUniform1i(first, done);
         glUniform1i(end, done + count);
         const auto sliceStart = Clock::now();
-        glDispatchCompute(static_cast<GLuint>((count + kBakeLocalSize - 1) / kBakeLocalSize), 1,
-                          1);
+        glDispatchCompute(static_cast<GLuint>((count + kBakeLocalSize - 1) / kBakeLocalSize), 1, 1);
         glFinish();
         ++dispatches;
         done += count;

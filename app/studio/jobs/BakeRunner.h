@@ -1,9 +1,9 @@
 #pragma once
 // Runs the bakers (normal, cone, relaxed cone) on a worker thread, one at a time in the order
 // asked, with progress and cancellation: the UI never waits for a bake. Cone bakes run on the GPU
-// where a context can share the viewports' (GpuConeBake.h), on the CPU otherwise. The result comes back on
-// the GUI thread together with the maps it was baked from, so the caller can tell whether the
-// height map changed meanwhile.
+// where a context can share the viewports' (GpuConeBake.h), on the CPU otherwise. The result comes
+// back on the GUI thread together with the maps it was baked from, so the caller can tell whether
+// the height map changed meanwhile.
 
 #include "parallax/bake/ConeMap.h"
 #include "parallax/bake/NormalMapBaker.h"

@@ -285,12 +285,12 @@ void MainWindow::onBakeFinished(const BakeOutcome& outcome) {
         return;
     }
     m_document->edit(tr("Bake %1").arg(what), [&](DocumentState& s) { s = *next; });
-    statusBar()->showMessage(tr("Baked the %1 in %2 s%3; it is saved with the material.")
-                                 .arg(what)
-                                 .arg(outcome.seconds, 0, 'f', 2)
-                                 .arg(outcome.gpu.isEmpty() ? QString()
-                                                            : tr(" on the GPU (%1)").arg(outcome.gpu)),
-                             8000);
+    statusBar()->showMessage(
+        tr("Baked the %1 in %2 s%3; it is saved with the material.")
+            .arg(what)
+            .arg(outcome.seconds, 0, 'f', 2)
+            .arg(outcome.gpu.isEmpty() ? QString() : tr(" on the GPU (%1)").arg(outcome.gpu)),
+        8000);
 }
 
 void MainWindow::restoreLayout() {

@@ -275,9 +275,9 @@ Result<GeneratedShader> generateBakeShader(BakeShaderKind kind, WrapMode wrap) {
     options.title = std::string(relaxed ? "relaxed" : "quick") + " cone bake (" +
                     std::string(toString(wrap)) + "), compute stage";
     options.countFetches = false;
-    options.prelude = "layout(local_size_x = " + std::to_string(kBakeLocalSize) +
-                      ") in;\nconst bool pxBakeRepeat = " +
-                      (wrap == WrapMode::Repeat ? "true" : "false") + ";\n";
+    options.prelude =
+        "layout(local_size_x = " + std::to_string(kBakeLocalSize) +
+        ") in;\nconst bool pxBakeRepeat = " + (wrap == WrapMode::Repeat ? "true" : "false") + ";\n";
     return generateStage(options, {}, files);
 }
 

@@ -20,7 +20,7 @@
 namespace px {
 
 struct GpuBakeInfo {
-    std::string renderer;   // GL_RENDERER of the context that baked
+    std::string renderer;      // GL_RENDERER of the context that baked
     double milliseconds = 0.0; // upload, dispatches and read-back (not the CPU's pyramids)
     int dispatches = 0;
 };
