@@ -4,28 +4,19 @@
 #include "parallax/bake/ConeMapReference.h"
 #include "parallax/render/GlInfo.h"
 #include "parallax/render/HeadlessContext.h"
+#include "parallax/render/ShaderProgram.h"
 #include "parallax/shader/ShaderGenerator.h"
 
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <algorithm>
 #include <chrono>
-#include <cstring>
 
 namespace px {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::string shaderLog(GLuint shader) {
-    GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
-    log.resize(std::strlen(log.c_str()));
-    return log;
-}
 
 // A storage buffer holding `bytes` of `data` (or uninitialised), bound at `binding`.
 Result<gl::Object> storage(int binding, const void* data, std::size_t bytes) {
@@ -74,19 +65,15 @@ Result<unsigned> GpuConeBaker::program(ConeKind kind, WrapMode wrap) {
         kind == ConeKind::Relaxed ? BakeShaderKind::Relaxed : BakeShaderKind::Quick, wrap);
     if (!source)
         return source.error();
-    gl::Object shader(gl::ObjectKind::Shader, glCreateShader(GL_COMPUTE_SHADER));
-    const char* text = source->text.c_str();
-    glShaderSource(shader.id(), 1, &text, nullptr);
-    glCompileShader(shader.id());
-    GLint ok = GL_FALSE;
-    glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
-    if (!ok)
-        return Error{"the cone bake's compute shader does not compile:\n" +
-                     mapCompilerLog(shaderLog(shader.id()), source->sources)};
+    Result<gl::Object> shader =
+        compileShaderStage(GL_COMPUTE_SHADER, *source, "the cone bake's compute shader");
+    if (!shader)
+        return shader.error();
     gl::Object p(gl::ObjectKind::Program);
-    glAttachShader(p.id(), shader.id());
+    glAttachShader(p.id(), shader->id());
     glLinkProgram(p.id());
-    glDetachShader(p.id(), shader.id());
+    glDetachShader(p.id(), shader->id());
+    GLint ok = GL_FALSE;
     glGetProgramiv(p.id(), GL_LINK_STATUS, &ok);
     if (!ok)
         return Error{"the cone bake's compute program does not link"};
