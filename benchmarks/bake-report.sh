@@ -107,7 +107,7 @@ if [ "$baseline" != none ]; then
 fi
 
 csv="$work/bake-times.csv"
-echo "map,size,kind,baker,run,wall_s,user_s,sys_s,max_rss_mib,mean_cone_ratio" >"$csv"
+echo "map,size,kind,baker,run,wall_s,user_s,sys_s,max_rss_mib,mean_cone_ratio,gpu_ms" >"$csv"
 load() { cut -d' ' -f1-3 /proc/loadavg; }
 loadStart=$(load)
 gl=""
@@ -116,7 +116,7 @@ gl=""
 bake() { # map size kind baker binary [--gpu]
     local map=$1 size=$2 kind=$3 baker=$4 bin=$5 run=$6
     shift 6
-    local res="$work/out.exr" t="$work/time.txt"
+    local res="$work/out.exr" t="$work/time.txt" gpuMs=""
     rm -f "$res"
     /usr/bin/time -f "%e %U %S %M" -o "$t" "$bin" bake "$kind" "$@" \
         --height "$work/$map-$size.exr" --bits 32 --out "$res" 2>"$work/stderr.txt" ||
@@ -125,6 +125,8 @@ bake() { # map size kind baker binary [--gpu]
         grep -q "baked on the GPU" "$work/stderr.txt" ||
             fail "bake --gpu did not bake on the GPU: $(tail -n 3 "$work/stderr.txt")"
         gl=$(sed -n 's/^baked on the GPU (\(.*\)) in [0-9]* ms$/\1/p' "$work/stderr.txt" | head -n 1)
+        # The GPU's own part (upload, dispatches, read-back), as bake --gpu reports it.
+        gpuMs=$(sed -n 's/^baked on the GPU (.*) in \([0-9]*\) ms$/\1/p' "$work/stderr.txt" | head -n 1)
     fi
     read -r wall user sys rss <"$t"
     # The mean cone ratio c = G^2 of the written map (oiiotool's --stats where it is installed).
@@ -133,7 +135,7 @@ bake() { # map size kind baker binary [--gpu]
         mean=$(oiiotool "$res" --ch G --dup --mul --printstats 2>/dev/null |
             sed -n 's/.*Stats Avg: *\([0-9.e+-]*\).*/\1/p' | head -n 1 || true)
     fi
-    echo "$map,$size,$kind,$baker,$run,$wall,$user,$sys,$((rss / 1024)),$mean" >>"$csv"
+    echo "$map,$size,$kind,$baker,$run,$wall,$user,$sys,$((rss / 1024)),$mean,$gpuMs" >>"$csv"
     printf '  %-8s %-12s %-6s %5s²  %7.2f s wall  %7.2f s CPU  %6d MiB\n' "$baker" "$kind" "$map" \
         "$size" "$wall" "$(awk "BEGIN {print $user + $sys}")" "$((rss / 1024))"
 }
@@ -146,7 +148,7 @@ coldRecommend() { # map size baker binary run
         --cache "$work/cache" --out "$work/recommend-$baker.txt" 2>"$work/stderr.txt" ||
         fail "$baker: recommend on $map $size failed: $(tail -n 3 "$work/stderr.txt")"
     read -r wall user sys rss <"$t"
-    echo "$map,$size,recommend,$baker,$run,$wall,$user,$sys,$((rss / 1024))," >>"$csv"
+    echo "$map,$size,recommend,$baker,$run,$wall,$user,$sys,$((rss / 1024)),," >>"$csv"
     printf '  %-8s %-12s %-6s %5s²  %7.2f s wall  %7.2f s CPU  %6d MiB\n' "$baker" recommend \
         "$map" "$size" "$wall" "$(awk "BEGIN {print $user + $sys}")" "$((rss / 1024))"
 }
@@ -192,8 +194,8 @@ done
     echo "- load average (1, 5, 15 min): $loadStart at the start, $(load) at the end"
     [ -n "$gl" ] && echo "- GPU: $gl"
     echo
-    echo "| map | size | kind | baker | wall (median) | CPU (median) | peak RSS | mean cone ratio | new vs baseline (wall, CPU) |"
-    echo "|---|---|---|---|---|---|---|---|---|"
+    echo "| map | size | kind | baker | wall (median) | CPU (median) | peak RSS | mean cone ratio | GPU part (median) | new vs baseline (wall, CPU) |"
+    echo "|---|---|---|---|---|---|---|---|---|---|"
     tail -n +2 "$csv" | sort -t, -k1,1 -k2,2n -k3,3 -k4,4 | awk -F, '
         function median(list, n,   a, i, j, t) {
             n = split(list, a, " ")
@@ -201,7 +203,7 @@ done
             return n % 2 ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2
         }
         { key = $1 "," $2 "," $3 "," $4; wall[key] = wall[key] " " $6; cpu[key] = cpu[key] " " ($7 + $8)
-          rss[key] = $9 > rss[key] ? $9 : rss[key]; mean[key] = $10; if (!(key in seen)) { order[++n] = key; seen[key] = 1 } }
+          rss[key] = $9 > rss[key] ? $9 : rss[key]; mean[key] = $10; if ($11 != "") gms[key] = gms[key] " " $11; if (!(key in seen)) { order[++n] = key; seen[key] = 1 } }
         END {
             for (i = 1; i <= n; i++) { k = order[i]; w[k] = median(wall[k]); c[k] = median(cpu[k]) }
             for (i = 1; i <= n; i++) {
@@ -209,7 +211,8 @@ done
                 b = f[1] "," f[2] "," f[3] ",baseline"
                 if (f[4] != "baseline" && (b in w) && w[k] > 0 && c[k] > 0)
                     ratio = sprintf("%.2fx, %.2fx", w[b] / w[k], c[b] / c[k])
-                printf "| %s | %s² | %s | %s | %.2f s | %.2f s | %d MiB | %s | %s |\n", f[1], f[2], f[3], f[4], w[k], c[k], rss[k], mean[k], ratio
+                g = (k in gms) ? sprintf("%.0f ms", median(gms[k])) : ""
+                printf "| %s | %s² | %s | %s | %.2f s | %.2f s | %d MiB | %s | %s | %s |\n", f[1], f[2], f[3], f[4], w[k], c[k], rss[k], mean[k], g, ratio
             }
         }'
 } >"$work/bake-report.md"
