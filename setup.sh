@@ -16,6 +16,7 @@ packages=(
   xvfb xauth fonts-dejavu-core
   libgl1-mesa-dri libegl1 libegl-dev libgles-dev mesa-utils glslang-tools
   clang-format clang-tidy
+  time
 )
 
 missing=()

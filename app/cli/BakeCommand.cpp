@@ -15,12 +15,14 @@
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/FileExtension.h"
 #include "parallax/material/MaterialNames.h"
+#include "parallax/render/GpuConeBaker.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <utility>
 
 namespace px::cli {
 
@@ -37,6 +39,7 @@ struct BakeOptions {
     std::optional<int> bits;
     std::string layout = "atlas";
     int level = -1;
+    bool gpu = false;
     std::string out;
 };
 
@@ -73,7 +76,7 @@ Status checkApplicable(const BakeOptions& o, const CLI::App& cmd) {
     for (const Rule& r :
          {Rule{"--scale", normal}, Rule{"--filter", normal}, Rule{"--green", normal},
           Rule{"--normal", normal}, Rule{"--normal-green", normal}, Rule{"--layout", pyramid},
-          Rule{"--level", pyramid}}) {
+          Rule{"--level", pyramid}, Rule{"--gpu", !normal && !pyramid}}) {
         if (!r.allowed && cmd.count(r.option) > 0)
             return Error{std::string(r.option) + " does not apply to bake " + o.kind};
     }
@@ -125,16 +128,30 @@ Result<Image> bakeNormal(const BakeOptions& o, const BakeControl& control) {
 }
 
 Result<Image> bakeCones(const BakeOptions& o, PixelFormat format, const BakeControl& control) {
-    Result<HeightField> source = o.height.load();
-    if (!source)
-        return source.error();
-    // Bake from the heights as the file will store them, so that R and G agree.
-    const HeightField field = roundHeightsUp(*source, format);
+    // Bake from the heights as the file will store them, so that R and G agree (the loaded
+    // heights go at once: an 8192² map's 256 MiB less at the peak).
+    HeightField field;
+    {
+        Result<HeightField> source = o.height.load();
+        if (!source)
+            return source.error();
+        field = roundHeightsUp(*source, format);
+    }
     const ConeKind kind = o.kind == "cone" ? ConeKind::Conservative : ConeKind::Relaxed;
-    Result<ConeMap> cones = bakeConeMap(field, o.height.wrapMode(), kind, control);
+    // --gpu: the same kernels on a GPU context; asked for and not there is an error (a script
+    // that asks for the GPU wants to know), never a silent CPU bake.
+    GpuBakeInfo info;
+    Result<ConeMap> cones =
+        o.gpu ? bakeConeMapHeadless(field, o.height.wrapMode(), kind, control, &info)
+              : bakeConeMap(field, o.height.wrapMode(), kind, control);
+    if (o.gpu && !cones && !isCancelled(cones.error()))
+        return Error{"--gpu: " + cones.error().message + " (bake without --gpu to use the CPU)"};
+    if (o.gpu && cones)
+        std::fprintf(stderr, "baked on the GPU (%s) in %.0f ms\n", info.renderer.c_str(),
+                     info.milliseconds);
     if (!cones)
         return cones.error();
-    return encodeConeMap(field, *cones, format);
+    return encodeConeMap(field, std::move(*cones), format);
 }
 
 Result<Image> bakePyramid(const BakeOptions& o, PixelFormat format) {
@@ -208,6 +225,9 @@ Action addBakeCommand(CLI::App& app) {
                     "pyramid: atlas (every level stacked, for the GPU) or chain (for looking at)")
         ->check(CLI::IsMember({"atlas", "chain"}));
     cmd->add_option("--level", o->level, "pyramid: write one level only")->check(CLI::Range(0, 64));
+    cmd->add_flag("--gpu", o->gpu,
+                  "cone, relaxed-cone: bake on the GPU (the same kernels, the same map; an "
+                  "error where no OpenGL 4.3 context can be made)");
     cmd->add_option("--out", o->out, "Output image: .png, .tif or .exr (format from the extension)")
         ->required();
     return [o, cmd] { return runBake(*o, *cmd); };

@@ -11,6 +11,7 @@
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialAssets.h"
 #include "parallax/material/MaterialFile.h"
+#include "parallax/render/GpuConeBaker.h"
 
 #include <algorithm>
 #include <cmath>
@@ -46,6 +47,7 @@ struct RecommendOptions {
     bool json = false;
     std::string out = "-";
     ConeCacheOptions cache;
+    bool bakeGpu = false;
 };
 
 std::string num(double value, const char* pattern = "%.4g") {
@@ -189,6 +191,16 @@ int runRecommend(const RecommendOptions& o) {
     config.cost = *parseCostMeasure(o.cost);
     config.gpuUnavailable = "recommend measures fetches and CPU time; time its choice with "
                             "'parallax-cli bench --gpu'";
+    if (o.bakeGpu) {
+        // The same kernels on the GPU; no context is an error, as for bake --gpu.
+        config.coneBaker = [](const HeightField& f, WrapMode w, ConeKind k,
+                              const BakeControl& c) -> Result<ConeMap> {
+            Result<ConeMap> gpu = bakeConeMapHeadless(f, w, k, c);
+            if (!gpu && !isCancelled(gpu.error()))
+                return Error{"--bake-gpu: " + gpu.error().message};
+            return gpu;
+        };
+    }
     double tiling = 1.0;
     int mapWidth = 0;
     if (!o.material.empty()) {
@@ -329,6 +341,9 @@ Action addRecommendCommand(CLI::App& app) {
     cmd->add_flag("--hdrp", o->hdrp,
                   "Also the fewest Unity HDRP parallax-occlusion steps that meet it");
     o->cache.addTo(*cmd);
+    cmd->add_flag("--bake-gpu", o->bakeGpu,
+                  "Bake the cone maps it needs on the GPU (the same maps; an error where no "
+                  "OpenGL 4.3 context can be made)");
     cmd->add_flag("--json", o->json, "Write JSON instead of text");
     cmd->add_option("--out", o->out, "Output file (default: standard output)");
     return [o] { return runRecommend(*o); };

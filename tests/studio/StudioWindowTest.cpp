@@ -12,6 +12,8 @@
 #include "panels/TechniquePanel.h"
 #include "panels/ViewPanel.h"
 #include "panels/WorkPrecisionView.h"
+#include "parallax/bake/ConeMapBaker.h"
+#include "parallax/bake/ConeMapReference.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/material/MaterialFile.h"
@@ -633,6 +635,41 @@ private slots:
         w->document()->undoStack()->undo(); // the bake
         QVERIFY(!w->document()->state().hasMap(MapKind::Cone));
         QVERIFY(!combo->isAvailable(Technique::Cone));
+    }
+
+    // Cone bakes go to the GPU (a context sharing the viewports', on the bake's worker) and give
+    // the CPU's map; the view keeps drawing while they run (dispatches of a few milliseconds).
+    void coneBakesRunOnTheGpuWhileTheViewDraws() {
+        auto w = makeWindow(1, 512);
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        std::vector<BakeOutcome> finished;
+        connect(w->baker(), &BakeRunner::finished, this,
+                [&finished](const BakeOutcome& o) { finished.push_back(o); });
+        std::vector<double> progress; // reported between the GPU's slices, in order
+        connect(w->baker(), &BakeRunner::progress, this,
+                [&progress](BakeKind, double f) { progress.push_back(f); });
+        w->startBake(BakeKind::RelaxedCone);
+        QVERIFY(w->baker()->isBusy());
+        const int before = preview->framesRendered();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (preview->update(), preview->framesRendered() >= before + 3 || !w->baker()->isBusy()),
+            60000);
+        QVERIFY2(w->baker()->isBusy(), "the bake ended before the view drew three frames");
+        QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 120000);
+        QCOMPARE(finished.size(), std::size_t(1));
+        const BakeOutcome& outcome = finished.front();
+        QVERIFY2(outcome.error.isEmpty(), qPrintable(outcome.error));
+        QVERIFY2(!outcome.gpu.isEmpty(), "the relaxed cone map was not baked on the GPU");
+        QVERIFY(progress.size() >= 3);
+        QVERIFY(std::is_sorted(progress.begin(), progress.end()));
+        QVERIFY(progress.front() < 0.5 && progress.back() > 0.9);
+        ConeMap cpu =
+            bakeConeMap(outcome.request.source->height, outcome.request.wrap, ConeKind::Relaxed);
+        quantiseDown(cpu, 65535);
+        QVERIFY(outcome.cone.sqrtRatio == cpu.sqrtRatio);
+        QVERIFY(w->statusBar()->currentMessage().contains("on the GPU"));
     }
 
     void cancelledBakeChangesNothing() {

@@ -20,6 +20,16 @@ std::string shaderLog(GLuint shader) {
 }
 
 Result<gl::Object> compile(GLenum stage, const GeneratedShader& source, const std::string& name) {
+    return compileShaderStage(stage, source,
+                              "the " +
+                                  std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+                                  " shader of " + name);
+}
+
+} // namespace
+
+Result<gl::Object> compileShaderStage(unsigned stage, const GeneratedShader& source,
+                                      const std::string& what) {
     gl::Object shader(gl::ObjectKind::Shader, glCreateShader(stage));
     const char* text = source.text.c_str();
     glShaderSource(shader.id(), 1, &text, nullptr);
@@ -27,13 +37,10 @@ Result<gl::Object> compile(GLenum stage, const GeneratedShader& source, const st
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
     if (!ok)
-        return Error{"the " + std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                     " shader of " + name + " does not compile:\n" +
+        return Error{what + " does not compile:\n" +
                      mapCompilerLog(shaderLog(shader.id()), source.sources)};
     return shader;
 }
-
-} // namespace
 
 Result<ShaderProgram> ShaderProgram::build(const GeneratedProgram& generated) {
     const std::string name = generated.key.name();

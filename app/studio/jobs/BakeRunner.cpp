@@ -1,10 +1,14 @@
 #include "jobs/BakeRunner.h"
 
 #include "jobs/BackgroundPriority.h"
+#include "jobs/GpuConeBake.h"
+#include "jobs/SharedGlContext.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/ConeMapFinish.h"
 
 #include <QMetaObject>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
 #include <QPointer>
 #include <QtConcurrent/QtConcurrentRun>
 #include <chrono>
@@ -26,7 +30,8 @@ QString bakeTitle(BakeKind kind) {
 
 namespace {
 
-BakeOutcome runBake(const BakeRequest& request, const BakeControl& control) {
+BakeOutcome runBake(const BakeRequest& request, const BakeControl& control,
+                    const std::shared_ptr<QOffscreenSurface>& surface) {
     lowerThisThreadsPriority(); // the runner's own thread: bakes only
     BakeOutcome outcome;
     outcome.request = request;
@@ -44,7 +49,12 @@ BakeOutcome runBake(const BakeRequest& request, const BakeControl& control) {
     } else {
         const ConeKind kind =
             request.kind == BakeKind::Cone ? ConeKind::Conservative : ConeKind::Relaxed;
-        Result<ConeMap> cone = bakeConeMap(field, request.wrap, kind, control);
+        QString gpu;
+        Result<ConeMap> cone = bakeConeOnGpu(field, request.wrap, kind, control, surface, &gpu);
+        if (cone)
+            outcome.gpu = gpu;
+        else if (!isCancelled(cone.error())) // no GPU context here: the same map on the CPU
+            cone = bakeConeMap(field, request.wrap, kind, control);
         if (cone) {
             // 16 bits, a 16-bit file's precision (never wider): with a 16-bit height the GPU
             // then holds the cone map in RG16, half of RG32F (an 8192² map: 256 MiB less).
@@ -127,10 +137,16 @@ void BakeRunner::next() {
     const BakeRequest request = *m_runningRequest;
     // The cancel flag lives as long as the job: the job holds its own reference.
     std::shared_ptr<std::atomic<bool>> flag = m_cancel;
+    // Cone bakes go to the GPU where the viewports share their context (a surface for the
+    // worker's is made here, on the GUI thread, as Qt requires).
+    std::shared_ptr<QOffscreenSurface> surface;
+    if (kind != BakeKind::Normal && QOpenGLContext::globalShareContext())
+        surface = workerSurface();
     BackgroundArena* arena = m_arena.get(); // outlives the job: ~BakeRunner waits for it
-    m_watcher.setFuture(QtConcurrent::run(&m_pool, [request, control, flag, arena] {
+    m_watcher.setFuture(QtConcurrent::run(&m_pool, [request, control, flag, arena, surface] {
         BakeOutcome outcome;
-        arena->execute([&] { outcome = runBake(request, control); }); // the bakers' loops there
+        // The bakers' loops in the arena; the GPU's context on the runner's own thread.
+        arena->execute([&] { outcome = runBake(request, control, surface); });
         return outcome;
     }));
 }

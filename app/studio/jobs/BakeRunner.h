@@ -1,8 +1,9 @@
 #pragma once
 // Runs the bakers (normal, cone, relaxed cone) on a worker thread, one at a time in the order
-// asked, with progress and cancellation: the UI never waits for a bake. The result comes back on
-// the GUI thread together with the maps it was baked from, so the caller can tell whether the
-// height map changed meanwhile.
+// asked, with progress and cancellation: the UI never waits for a bake. Cone bakes run on the GPU
+// where a context can share the viewports' (GpuConeBake.h), on the CPU otherwise. The result comes
+// back on the GUI thread together with the maps it was baked from, so the caller can tell whether
+// the height map changed meanwhile.
 
 #include "parallax/bake/ConeMap.h"
 #include "parallax/bake/NormalMapBaker.h"
@@ -41,6 +42,7 @@ struct BakeOutcome {
     bool cancelled = false;
     double seconds = 0.0; // the bake itself, on its thread
     int threadNice = 0;   // the bake's thread's nice value while it baked (BackgroundPriority.h)
+    QString gpu;          // cone bakes: the GL renderer that baked them, empty if the CPU did
 };
 
 class BakeRunner : public QObject {

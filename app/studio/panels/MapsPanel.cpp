@@ -79,10 +79,12 @@ MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* par
         m_bakeLabel->setText(
             outcome.cancelled
                 ? tr("The %1 bake was cancelled.").arg(bakeTitle(outcome.request.kind))
-            : !outcome.error.isEmpty() ? outcome.error
-                                       : tr("Baked the %1 in %2 s.")
-                                             .arg(bakeTitle(outcome.request.kind))
-                                             .arg(outcome.seconds, 0, 'f', 2));
+            : !outcome.error.isEmpty()
+                ? outcome.error
+                : tr("Baked the %1 in %2 s%3.")
+                      .arg(bakeTitle(outcome.request.kind))
+                      .arg(outcome.seconds, 0, 'f', 2)
+                      .arg(outcome.gpu.isEmpty() ? QString() : tr(" on the GPU")));
         m_progress->setValue(outcome.cancelled || !outcome.error.isEmpty() ? 0 : 100);
     });
     connect(m_baker, &BakeRunner::idle, this, [this] {

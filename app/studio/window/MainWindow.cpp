@@ -303,14 +303,17 @@ void MainWindow::onBakeFinished(const BakeOutcome& outcome) {
     const BakeKind kind = outcome.request.kind;
     const double bakeSeconds = outcome.seconds;
     const auto asked = outcome.request.asked;
-    auto report = [this, kind, bakeSeconds, asked] {
+    const QString where =
+        outcome.gpu.isEmpty() ? QString() : tr(" on the GPU (%1)").arg(outcome.gpu);
+    auto report = [this, kind, bakeSeconds, asked, where] {
         const double shown =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - asked).count();
         m_mapsPanel->showBakeShown(kind, bakeSeconds, shown);
         statusBar()->showMessage(
-            tr("Baked the %1 in %2 s, shown %3 s after Bake; it is saved with the material.")
+            tr("Baked the %1 in %2 s%3, shown %4 s after Bake; it is saved with the material.")
                 .arg(bakeTitle(kind))
                 .arg(bakeSeconds, 0, 'f', 2)
+                .arg(where)
                 .arg(shown, 0, 'f', 2),
             8000);
     };

@@ -41,14 +41,13 @@ HeightField roundHeightsUp(const HeightField& field, PixelFormat format) {
     return rounded;
 }
 
-Image encodeConeMap(const HeightField& heights, const ConeMap& cones, PixelFormat format) {
-    Image image(cones.width, cones.height, 3);
-    ConeMap g = cones;
+Image encodeConeMap(const HeightField& heights, ConeMap g, PixelFormat format) {
+    Image image(g.width, g.height, 3);
     const int steps = quantisationSteps(format);
     if (steps > 0)
         quantiseDown(g, steps);
-    for (int y = 0; y < cones.height; ++y) {
-        for (int x = 0; x < cones.width; ++x) {
+    for (int y = 0; y < g.height; ++y) {
+        for (int x = 0; x < g.width; ++x) {
             image.at(x, y, 0) = roundUpToStep(heights.at(x, y), steps);
             image.at(x, y, 1) = g.g(x, y);
         }

@@ -1,55 +1,57 @@
 #include "parallax/bake/ConeMapReference.h"
 
-#include "bake/ConeCells.h"
+#include "bake/BakeKernel.h"
 
+#include <algorithm>
+#include <cmath>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace px {
 namespace {
 
-using namespace cone;
+using bake::BakeKernel;
 
 bool inside(int i, int n) {
     return i >= 0 && i < n;
 }
 
 // Every cell, in square rings of offsets around the apex; ring r's cells are at least r - 1
-// texels away along one axis, so the scan stops once that cannot narrow the cone.
-template <typename CellFn>
-float ringScan(const CellGrid& g, const Apex& b, float hMax, CellFn cell) {
-    if (!(b.h < hMax))
+// texels away along one axis, so the scan stops once that cannot narrow the cone. `cell` is
+// the kernel's bound of one cell (cutoff: the cone so far).
+template <typename CellFn> float ringScan(BakeKernel& k, glm::ivec2 b, float hb, CellFn cell) {
+    if (!(hb < k.pxBakeMax))
         return 1.0f;
     float c = 1.0f;
-    const int rMax = std::max(g.field->width, g.field->height) + 2;
+    const glm::ivec2 cells = k.pxBakeCells();
+    const int rMax = std::max(k.pxBakeSize.x, k.pxBakeSize.y) + 2;
     for (int r = 1; r <= rMax; ++r) {
         if (r >= 2) {
-            const float d = std::min(texelDistance(static_cast<float>(r - 1), 0.0f, g),
-                                     texelDistance(0.0f, static_cast<float>(r - 1), g));
-            if (d / (hMax - b.h) >= c)
+            const float d = std::min(k.pxBakeDistance(static_cast<float>(r - 1), 0.0f),
+                                     k.pxBakeDistance(0.0f, static_cast<float>(r - 1)));
+            if (d / (k.pxBakeMax - hb) >= c)
                 break;
         }
         for (int oy = -r; oy <= r - 1; ++oy) {
             const bool edgeRow = oy == -r || oy == r - 1;
             for (int ox = -r; ox <= r - 1; ox += edgeRow ? 1 : 2 * r - 1) {
-                if (g.repeat() ? beyondPeriod(g, ox, oy)
-                               : !inside(b.x + ox, g.cellsX) || !inside(b.y + oy, g.cellsY))
+                if (k.pxBakeRepeat ? k.pxBakeBeyondPeriod(ox, oy)
+                                   : !inside(b.x + ox, cells.x) || !inside(b.y + oy, cells.y))
                     continue;
-                c = cell(g, b, ox, oy, c);
+                c = std::min(c, cell(k, b, hb, glm::ivec2(ox, oy), c));
             }
         }
     }
     return c;
 }
 
-// Relaxed cones with clamp also see the strips beyond the map's edges (ConeCells.h).
-float stripScan(const CellGrid& g, const Apex& b, float c) {
+// Relaxed cones with clamp also see the strips beyond the map's edges: every segment.
+float stripScan(BakeKernel& k, glm::ivec2 b, float hb, float c) {
     for (int side = 0; side < 4; ++side) {
-        for (int i = 0; i < stripSegments(g, side); ++i) {
-            int x, y;
-            Shape shape;
-            stripSegment(g, side, i, x, y, shape);
-            c = relaxedCell(g, b, x - b.x, y - b.y, c, shape);
+        for (int i = 0; i < k.pxStripSegments(side); ++i) {
+            const glm::ivec4 s = k.pxStripSegment(side, i);
+            c = std::min(c, k.pxBakeRelaxedAt(b, hb, glm::ivec2(s.x - b.x, s.y - b.y),
+                                              glm::ivec2(s.z, s.w), c));
         }
     }
     return c;
@@ -60,17 +62,19 @@ ConeMap bakeBruteForce(const HeightField& field, WrapMode wrap, ConeKind kind, C
     ConeMap cones(kind, field.width, field.height);
     if (field.empty())
         return cones;
-    const CellGrid grid(field, wrap);
-    const float hMax = field.maxHeight();
+    const bake::BakeBindings bindings(field, wrap);
     tbb::parallel_for(tbb::blocked_range<int>(0, field.height),
                       [&](const tbb::blocked_range<int>& rows) {
+                          BakeKernel k;
+                          static_cast<bake::BakeBindings&>(k) = bindings;
                           for (int y = rows.begin(); y < rows.end(); ++y) {
                               for (int x = 0; x < field.width; ++x) {
-                                  const Apex b{x, y, field.at(x, y)};
-                                  float c = ringScan(grid, b, hMax, cell);
-                                  if (kind == ConeKind::Relaxed && b.h < hMax)
-                                      c = stripScan(grid, b, c);
-                                  cones.g(x, y) = std::sqrt(finishRatio(c));
+                                  const glm::ivec2 b(x, y);
+                                  const float hb = field.at(x, y);
+                                  float c = ringScan(k, b, hb, cell);
+                                  if (kind == ConeKind::Relaxed && hb < k.pxBakeMax)
+                                      c = stripScan(k, b, hb, c);
+                                  cones.g(x, y) = std::sqrt(k.pxBakeFinish(c));
                               }
                           }
                       });
@@ -81,15 +85,15 @@ ConeMap bakeBruteForce(const HeightField& field, WrapMode wrap, ConeKind kind, C
 
 ConeMap bakeConservativeConesBruteForce(const HeightField& field, WrapMode wrap) {
     return bakeBruteForce(field, wrap, ConeKind::Conservative,
-                          [](const CellGrid& g, const Apex& b, int ox, int oy, float c) {
-                              return conservativeCell(g, b, ox, oy, c);
+                          [](BakeKernel& k, glm::ivec2 b, float hb, glm::ivec2 o, float c) {
+                              return k.pxBakeConservativeAt(b, hb, o, c);
                           });
 }
 
 ConeMap bakeRelaxedConesBruteForce(const HeightField& field, WrapMode wrap) {
     return bakeBruteForce(field, wrap, ConeKind::Relaxed,
-                          [](const CellGrid& g, const Apex& b, int ox, int oy, float c) {
-                              return relaxedCell(g, b, ox, oy, c);
+                          [](BakeKernel& k, glm::ivec2 b, float hb, glm::ivec2 o, float c) {
+                              return k.pxBakeRelaxedAt(b, hb, o, k.pxBakeSpan(), c);
                           });
 }
 

@@ -1,22 +1,28 @@
 #include "bake/EdgeStrips.h"
 
+#include <algorithm>
 #include <utility>
 
-namespace px::cone {
+namespace px::bake {
 
-EdgeStrips::EdgeStrips(const CellGrid& g) {
+EdgeStrips::EdgeStrips(const HeightField& f, WrapMode wrap) {
+    if (wrap == WrapMode::Repeat)
+        return;
     for (int side = 0; side < 4; ++side) {
-        const int n = stripSegments(g, side);
-        if (n == 0)
+        // As pxStripSegments(): a side of one texel across has no strips (its cells are them).
+        const int along = side < 2 ? f.height : f.width;
+        const int across = side < 2 ? f.width : f.height;
+        const int n = across < 2 ? 0 : along - 1;
+        if (n <= 0)
             continue;
         std::vector<float> level(n);
         for (int i = 0; i < n; ++i) {
-            int x, y;
-            Shape shape;
-            stripSegment(g, side, i, x, y, shape);
-            level[i] = std::max(g.texel(x, y), g.texel(x + shape.wx, y + shape.wy));
+            const int x = side == 0 ? 0 : (side == 1 ? f.width - 1 : i);
+            const int y = side == 2 ? 0 : (side == 3 ? f.height - 1 : i);
+            level[i] = side < 2 ? std::max(f.at(x, y), f.at(x, y + 1))
+                                : std::max(f.at(x, y), f.at(x + 1, y));
         }
-        m_levels[side].push_back(level);
+        m_levels[side].push_back(std::move(level));
         while (m_levels[side].back().size() > 1) {
             const std::vector<float>& child = m_levels[side].back();
             std::vector<float> parent((child.size() + 1) / 2);
@@ -28,42 +34,4 @@ EdgeStrips::EdgeStrips(const CellGrid& g) {
     }
 }
 
-float EdgeStrips::narrow(const CellGrid& g, const Apex& b, float c) const {
-    for (int side = 0; side < 4; ++side) {
-        const auto& levels = m_levels[side];
-        if (levels.empty())
-            continue;
-        const int n = static_cast<int>(levels[0].size());
-        std::array<std::pair<int, int>, 64> stack; // (level, index)
-        int top = 0;
-        stack[top++] = {static_cast<int>(levels.size()) - 1, 0};
-        while (top > 0) {
-            const auto [level, index] = stack[--top];
-            if (!(levels[level][index] > b.h))
-                continue;
-            const int first = index << level, last = std::min((index + 1) << level, n) - 1;
-            int x, y;
-            Shape shape;
-            stripSegment(g, side, first, x, y, shape);
-            const int ox = x - b.x, oy = y - b.y;
-            const int lastX = ox + (last - first + 1) * shape.wx,
-                      lastY = oy + (last - first + 1) * shape.wy;
-            const float u = gap(static_cast<float>(ox), static_cast<float>(lastX)) * g.invW;
-            const float v = gap(static_cast<float>(oy), static_cast<float>(lastY)) * g.invH;
-            const float rise = levels[level][index] - b.h;
-            if (u * u + v * v >= c * c * rise * rise * (1.0f + 1e-5f))
-                continue;
-            if (level == 0) {
-                c = relaxedCell(g, b, ox, oy, c, shape);
-                continue;
-            }
-            for (int k = 1; k >= 0; --k) {
-                if (2 * index + k < static_cast<int>(levels[level - 1].size()))
-                    stack[top++] = {level - 1, 2 * index + k};
-            }
-        }
-    }
-    return c;
-}
-
-} // namespace px::cone
+} // namespace px::bake

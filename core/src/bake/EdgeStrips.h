@@ -1,24 +1,26 @@
 #pragma once
-// Clamp only: beyond the map's edges the surface repeats its edge, flat outward but not along the
-// edge, so relaxed cones must see those strips too (ConeCells.h, stripSegment()). A 1-D maximum
-// pyramid of the edge segments per side finds the few that matter for an apex.
+// Clamp only: the 1-D maximum pyramids of the map's edge segments, per side, that
+// shaders/bake/strips.glsl walks (the strips beyond the edges limit relaxed cones too). Empty with
+// repeat.
 
-#include "bake/ConeCells.h"
+#include "parallax/heightfield/HeightField.h"
+#include "parallax/heightfield/WrapMode.h"
 
 #include <array>
 #include <vector>
 
-namespace px::cone {
+namespace px::bake {
 
 class EdgeStrips {
 public:
-    explicit EdgeStrips(const CellGrid& g); // empty with repeat
+    EdgeStrips(const HeightField& field, WrapMode wrap);
 
-    // Narrows the relaxed cone c of apex b with every strip that may.
-    float narrow(const CellGrid& g, const Apex& b, float c) const;
+    int levels(int side) const { return static_cast<int>(m_levels[side].size()); }
+    int count(int side, int level) const { return static_cast<int>(m_levels[side][level].size()); }
+    float max(int side, int level, int i) const { return m_levels[side][level][i]; }
 
 private:
     std::array<std::vector<std::vector<float>>, 4> m_levels; // per side, level, segment
 };
 
-} // namespace px::cone
+} // namespace px::bake

@@ -140,7 +140,9 @@ Status ProbeRun::prepare(const std::vector<Technique>& techniques) {
                     m_control.progress({static_cast<int>(done * 1000.0f), 1000, stage});
                 };
             }
-            Result<ConeMap> baked = bakeConeMap(field, m_config.wrap, kind, bakeControl);
+            Result<ConeMap> baked =
+                m_config.coneBaker ? m_config.coneBaker(field, m_config.wrap, kind, bakeControl)
+                                   : bakeConeMap(field, m_config.wrap, kind, bakeControl);
             if (!baked)
                 return isCancelled(baked.error())
                            ? Status(evaluationCancelled())

@@ -144,6 +144,29 @@ std::vector<std::string> identifiers(std::string_view code) {
 // The names a code item declares: a struct's tag, a function's name, or each declarator of a
 // global ("int a, b;" declares a and b). A declarator's name is its last identifier before its
 // '=', '[' or the comma or ';' that ends it; commas inside (), [] and {} do not split.
+// The members a block body declares ("float a[]; uint b;" up to its '}'): the last identifier
+// before each top-level '[' or ';'.
+std::vector<std::string> blockMembers(std::string_view body) {
+    std::vector<std::string> names;
+    std::string last;
+    bool named = false;
+    for (std::size_t i = 0; i < body.size() && body[i] != '}'; ++i) {
+        const char c = body[i];
+        if (isIdentStart(c)) {
+            const std::size_t start = i;
+            while (i + 1 < body.size() && isIdentChar(body[i + 1]))
+                ++i;
+            last = std::string(body.substr(start, i + 1 - start));
+        } else if ((c == '[' || c == ';') && !named && !last.empty()) {
+            names.push_back(last);
+            named = c == '[';
+        } else if (c == ';') {
+            named = false;
+        }
+    }
+    return names;
+}
+
 std::vector<std::string> declaredNames(std::string_view code) {
     std::vector<std::string> names;
     std::vector<std::string> words; // the current declarator's identifiers at depth 0
@@ -164,6 +187,10 @@ std::vector<std::string> declaredNames(std::string_view code) {
             if (depth == 0 && c == '{') {
                 if (words.size() >= 2 && words.front() == "struct")
                     return {words[1]};
+                // A storage block (layout(...) readonly buffer Name { T member[]; ... };): its
+                // members are what code names.
+                if (std::find(words.begin(), words.end(), "buffer") != words.end())
+                    return blockMembers(code.substr(i + 1));
                 if (!beforeParen.empty())
                     return {beforeParen}; // a function's body
             }
@@ -379,8 +406,11 @@ Result<std::vector<GlslItem>> splitItems(std::string_view text, int file, const 
         }
         int parens = 0;
         int braces = 0;
+        // Structs and storage blocks end at their ';', not at their '}'.
+        const std::string_view head = text.substr(i, text.find_first_of("{;", i) - i);
         bool isStruct =
-            text.compare(i, 6, "struct") == 0 && (i + 6 < n && !isIdentChar(text[i + 6]));
+            (text.compare(i, 6, "struct") == 0 && (i + 6 < n && !isIdentChar(text[i + 6]))) ||
+            head.find(" buffer ") != std::string_view::npos;
         std::size_t end = std::string_view::npos;
         int scanLine = line;
         for (std::size_t k = i; k < n; ++k) {

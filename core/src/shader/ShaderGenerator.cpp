@@ -84,6 +84,7 @@ struct StageOptions {
     bool wrapRepeat = true;   // pxWrapRepeat, a constant of the variant
     bool precise = true;      // PX_PRECISE as `precise` (verify) or nothing (production)
     bool countFetches = true; // keep the fetch counter (only where an output writes it)
+    std::string prelude;      // declarations after the header (a compute stage's layout)
 };
 
 // The production colour output writes no fetch count: its counting statements go (which leaves
@@ -161,6 +162,7 @@ Result<GeneratedShader> generateStage(const StageOptions& options,
     if (external.count("pxWrapRepeat"))
         text += std::string("const bool pxWrapRepeat = ") +
                 (options.wrapRepeat ? "true" : "false") + ";\n";
+    text += options.prelude;
 
     int file = 0;
     int nextLine = -1;
@@ -253,6 +255,30 @@ Result<GeneratedProgram> generateBackgroundProgram() {
     program.vertex = std::move(*vertex);
     program.fragment = std::move(*fragment);
     return program;
+}
+
+Result<GeneratedShader> generateBakeShader(BakeShaderKind kind, WrapMode wrap) {
+    // The GPU's bindings first (the kernels call them), then the kernels as kernels.glsl lists
+    // them (the list the C++ compilation includes), then the kind's main().
+    std::vector<std::string> files{"bake/gpu/bindings.glsl"};
+    std::string_view list = shader::embeddedFile("bake/kernels.glsl").value_or("");
+    constexpr std::string_view kInclude = "#include \"";
+    while (!list.empty()) {
+        const std::string_view line = list.substr(0, list.find('\n'));
+        list.remove_prefix(std::min(list.size(), line.size() + 1));
+        if (line.starts_with(kInclude) && line.ends_with('"'))
+            files.emplace_back(line.substr(kInclude.size(), line.size() - kInclude.size() - 1));
+    }
+    const bool relaxed = kind == BakeShaderKind::Relaxed;
+    files.emplace_back(relaxed ? "bake/gpu/relaxed.comp.glsl" : "bake/gpu/quick.comp.glsl");
+    StageOptions options;
+    options.title = std::string(relaxed ? "relaxed" : "quick") + " cone bake (" +
+                    std::string(toString(wrap)) + "), compute stage";
+    options.countFetches = false;
+    options.prelude =
+        "layout(local_size_x = " + std::to_string(kBakeLocalSize) +
+        ") in;\nconst bool pxBakeRepeat = " + (wrap == WrapMode::Repeat ? "true" : "false") + ";\n";
+    return generateStage(options, {}, files);
 }
 
 std::string VertexKey::name() const {

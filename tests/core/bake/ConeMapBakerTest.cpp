@@ -15,6 +15,7 @@
 #include <QtTest>
 #include <atomic>
 #include <cmath>
+#include <random>
 
 using namespace px;
 
@@ -61,6 +62,7 @@ private slots:
     void cancelsAndReportsProgress();
     void relaxedConeStopsWithinATileRow();
     void rejectsEmptyField();
+    void sameRunToRunAndForAnyThreadCount();
 };
 
 void ConeMapBakerTest::quickNeverWiderThanBruteForce_data() {
@@ -309,6 +311,31 @@ void ConeMapBakerTest::relaxedConeStopsWithinATileRow() {
                                            .arg(requestedAt)
                                            .arg(last)
                                            .arg(bound)));
+}
+
+// Both bakers, post-processed as the techniques use them: the same map on every run and for 1, 2,
+// 3 and 8 threads (more than this machine's cores: tiles and rows interleave otherwise), on a map
+// with several tile rows per thread and odd edges, both wraps, seeds varied per run.
+void ConeMapBakerTest::sameRunToRunAndForAnyThreadCount() {
+    const unsigned seed = std::random_device{}() % 100000u;
+    qInfo("map seed %u", seed);
+    const HeightField field = makeProceduralMap(ProceduralMap::Noise, 131, 70, seed);
+    for (ConeKind kind : {ConeKind::Conservative, ConeKind::Relaxed}) {
+        for (WrapMode mode : {WrapMode::Repeat, WrapMode::Clamp}) {
+            const ConeMap first = bakeConeMap(field, mode, kind);
+            QVERIFY(bakeConeMap(field, mode, kind).sqrtRatio == first.sqrtRatio);
+            for (int threads : {1, 2, 3, 8}) {
+                tbb::task_arena arena(threads);
+                ConeMap again;
+                arena.execute([&] { again = bakeConeMap(field, mode, kind); });
+                QVERIFY2(again.sqrtRatio == first.sqrtRatio,
+                         qPrintable(QString("%1 threads, %2, %3")
+                                        .arg(threads)
+                                        .arg(kind == ConeKind::Relaxed ? "relaxed" : "cone")
+                                        .arg(toString(mode).data())));
+            }
+        }
+    }
 }
 
 void ConeMapBakerTest::rejectsEmptyField() {

@@ -84,6 +84,27 @@ private slots:
         QCOMPARE(filesIn(cache).size(), std::size_t(4));
     }
 
+    // The files are named after the bakers' fingerprint (their output on a small fixed map): the
+    // bakers of issue 32 bake other cones than those before them, so they name their files
+    // otherwise and never read an entry the earlier bakers wrote (whose fingerprint, at fc05edd,
+    // was 92cd7ed75ac95a8c).
+    void newBakersStartNewEntries() {
+        QTemporaryDir dir;
+        const std::string cache = dir.path().toStdString();
+        clearRecommendationCache();
+        QVERIFY(recommend(configFor(m_stones, cache)));
+        const std::vector<fs::path> files = filesIn(cache);
+        QCOMPARE(files.size(), std::size_t(2));
+        for (const fs::path& f : files) {
+            const std::string name = f.filename().string();
+            QVERIFY2(name.find("-92cd7ed75ac95a8c.pxcone") == std::string::npos, name.c_str());
+            // The fingerprint is the name's last field: the same for both kinds.
+            QCOMPARE(name.substr(name.rfind('-')),
+                     files.front().filename().string().substr(
+                         files.front().filename().string().rfind('-')));
+        }
+    }
+
     void damagedFilesAreBakedAgain_data() {
         QTest::addColumn<bool>("truncate");
         QTest::addRow("a flipped byte") << false;

@@ -22,8 +22,9 @@ float roundUpToStep(float v, int steps);
 // make a cone map file self-consistent: its cones then hold for the surface its R channel gives.
 HeightField roundHeightsUp(const HeightField& field, PixelFormat format);
 
-// R = height (rounded up), G = sqrt(cone ratio) (rounded down), B = 0.
-Image encodeConeMap(const HeightField& heights, const ConeMap& cones, PixelFormat format);
+// R = height (rounded up), G = sqrt(cone ratio) (rounded down), B = 0. `cones` by value: moved
+// in, it is rounded in place (an 8192² map: 256 MiB less at the bake's peak).
+Image encodeConeMap(const HeightField& heights, ConeMap cones, PixelFormat format);
 
 enum class PyramidLayout {
     Atlas, // MaxMipPyramid::atlas(): every level stacked, what the GPU reads with texelFetch

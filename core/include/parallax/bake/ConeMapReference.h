@@ -3,8 +3,8 @@
 // no farther cell can narrow the cone (O(N^4) at worst). They are the oracles the fast bakers are
 // tested against and the baseline of the benchmarks. Each cell's bound is exact for the cells
 // around the apex and, elsewhere, at most a relative 1e-3 below the exact minimum for conservative
-// cones and 3e-2 for relaxed ones (kOracleTolerance, kRelaxedTolerance in ConeCells.h; never
-// above it). Not post-processed or quantised.
+// cones and 3e-2 for relaxed ones (PX_BAKE_ORACLE_TOLERANCE, PX_BAKE_RELAXED_TOLERANCE in
+// shaders/bake/cells.glsl; never above it). Not post-processed or quantised.
 
 #include "parallax/bake/ConeMap.h"
 #include "parallax/heightfield/HeightField.h"

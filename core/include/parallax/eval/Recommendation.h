@@ -10,6 +10,7 @@
 // the fetch cost; CPU and GPU times are measured and vary).
 
 #include "parallax/Result.h"
+#include "parallax/bake/BakeControl.h"
 #include "parallax/bake/ConeMap.h"
 #include "parallax/eval/Bench.h"
 #include "parallax/eval/EvalControl.h"
@@ -18,6 +19,7 @@
 #include "parallax/heightfield/WrapMode.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -82,6 +84,10 @@ struct RecommendConfig {
     std::uint64_t cacheLimitBytes = std::uint64_t(2) << 30;
     GpuFrameTimer gpuTimer; // needed for CostMeasure::GpuTime
     std::string gpuUnavailable;
+    // Bakes the cone maps not given, cached or kept (empty: bakeConeMap() on the CPU); the GPU's
+    // bakers make the same maps (docs/bakers.md), so the cache and the answer do not depend on it.
+    std::function<Result<ConeMap>(const HeightField&, WrapMode, ConeKind, const BakeControl&)>
+        coneBaker;
 };
 
 // One polar angle of one setting, every azimuth's rays pooled.

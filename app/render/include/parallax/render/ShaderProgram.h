@@ -18,6 +18,12 @@
 
 namespace px {
 
+// One stage (GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER) compiled; `what` names it
+// in the error ("the compute shader of the relaxed cone bake"), which carries the compiler log
+// with positions as "shaders/FILE:LINE".
+Result<gl::Object> compileShaderStage(unsigned stage, const GeneratedShader& source,
+                                      const std::string& what);
+
 class ShaderProgram {
 public:
     // Compiles and links; errors carry the compiler log with positions as "shaders/FILE:LINE".
