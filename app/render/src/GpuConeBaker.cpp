@@ -25,7 +25,7 @@ Result<gl::Object> storage(int binding, const void* data, std::size_t bytes) {
     if (static_cast<GLint64>(bytes) > largest)
         return Error{"the map needs a " + std::to_string(bytes >> 20) +
                      " MiB storage buffer, more than this GPU's " + std::to_string(largest >> 20) +
-                     " MiB: bake it on the CPU"};
+                     " MiB"};
     gl::Object buffer(gl::ObjectKind::Buffer);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());
     // An empty buffer is still bound (a program's unused block must have one).

@@ -60,14 +60,16 @@ Result<ConeMap> bakeRelaxedConeMap(const HeightField& field, WrapMode wrap,
                     const int tw = std::min(kTileW, field.width - tx);
                     for (int i = 0; i < kTileW; ++i)
                         kernel.pxSeedColumn[i] =
-                            i < tw ? above[static_cast<std::size_t>(tx + i)] : glm::ivec3(0);
+                            i < tw
+                                ? above[static_cast<std::size_t>(tx) + static_cast<std::size_t>(i)]
+                                : glm::ivec3(0);
                     kernel.pxRelaxedTile(glm::ivec2(tx, ty), glm::ivec2(tw, th));
                     for (int k = 0; k < tw * th; ++k)
                         cones.g(tx + k % tw, ty + k / tw) = kernel.pxRelaxedResult(k);
                     for (int j = 0; j < th; ++j)
                         kernel.pxSeedRow[j] = kernel.pxTileWitness[j * tw + tw - 1];
                     for (int i = 0; i < tw; ++i)
-                        above[static_cast<std::size_t>(tx + i)] =
+                        above[static_cast<std::size_t>(tx) + static_cast<std::size_t>(i)] =
                             kernel.pxTileWitness[(th - 1) * tw + i];
                 }
                 progress.advance(kTileRowWork);

@@ -15,6 +15,7 @@
 #include <QtTest>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <random>
 
 using namespace px;
@@ -315,10 +316,13 @@ void ConeMapBakerTest::relaxedConeStopsWithinATileRow() {
 
 // Both bakers, post-processed as the techniques use them: the same map on every run and for 1, 2,
 // 3 and 8 threads (more than this machine's cores: tiles and rows interleave otherwise), on a map
-// with several tile rows per thread and odd edges, both wraps, seeds varied per run.
+// with several tile rows per thread and odd edges, both wraps, seeds varied per run
+// (PX_TEST_SEED=N repeats one).
 void ConeMapBakerTest::sameRunToRunAndForAnyThreadCount() {
-    const unsigned seed = std::random_device{}() % 100000u;
-    qInfo("map seed %u", seed);
+    const char* given = std::getenv("PX_TEST_SEED");
+    const unsigned seed = given ? static_cast<unsigned>(std::strtoul(given, nullptr, 10))
+                                : std::random_device{}() % 100000u;
+    qInfo("map seed %u (PX_TEST_SEED=%u repeats it)", seed, seed);
     const HeightField field = makeProceduralMap(ProceduralMap::Noise, 131, 70, seed);
     for (ConeKind kind : {ConeKind::Conservative, ConeKind::Relaxed}) {
         for (WrapMode mode : {WrapMode::Repeat, WrapMode::Clamp}) {
