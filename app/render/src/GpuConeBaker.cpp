@@ -1,7 +1,7 @@
 #include "parallax/render/GpuConeBaker.h"
 
 #include "parallax/bake/ConeBakeInputs.h"
-#include "parallax/bake/ConeMapReference.h"
+#include "parallax/bake/ConeMapFinish.h"
 #include "parallax/render/GlInfo.h"
 #include "parallax/render/HeadlessContext.h"
 #include "parallax/render/ShaderProgram.h"
