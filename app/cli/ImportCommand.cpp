@@ -4,6 +4,7 @@
 #include "Cli.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/Inputs.h"
+#include "parallax/io/OutputGate.h"
 #include "parallax/material/MapKind.h"
 #include "parallax/material/MapPaths.h"
 #include "parallax/material/MaterialFile.h"
@@ -99,7 +100,7 @@ int runImport(const ImportOptions& o) {
     material.maps = relativeMapPaths(material.maps, o.out);
     if (Status s = saveMaterial(material, o.out); !s) {
         if (!heightFile.empty() && !keepHeight)
-            std::filesystem::remove(heightFile, ec);
+            static_cast<void>(removeOwned(heightFile, Removal::Unfinished)); // the failure is said
         return fail(s.error().message);
     }
     for (const std::string& line : importSummary(*set))

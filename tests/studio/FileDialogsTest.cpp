@@ -10,7 +10,9 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QLineEdit>
+#include <QPointer>
 #include <QTimer>
+#include <memory>
 
 using namespace px;
 using namespace px::studio;
@@ -25,19 +27,35 @@ struct DialogAnswer {
     bool seen = false;
 };
 
+// A file is chosen again on every tick until the dialog holds it (while its model still lists
+// the folder it may replace the name just typed, and accept() would then only change folder); the
+// timer stops once that dialog, and only that one, has gone.
 void answerNextDialog(const QString& answer, DialogAnswer* seen) {
     auto* timer = new QTimer;
     timer->setInterval(10);
-    QObject::connect(timer, &QTimer::timeout, [timer, answer, seen] {
+    auto target = std::make_shared<QPointer<QFileDialog>>();
+    QObject::connect(timer, &QTimer::timeout, [timer, answer, seen, target] {
         auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
-        if (!dialog)
+        if (seen->seen && (target->isNull() || dialog != target->data())) {
+            timer->stop();
+            timer->deleteLater();
             return;
-        timer->stop();
-        timer->deleteLater();
-        seen->openedIn = QDir(dialog->directory()).absolutePath();
-        const QStringList selected = dialog->selectedFiles();
-        seen->selected = selected.isEmpty() ? QString() : QFileInfo(selected.first()).fileName();
-        seen->seen = true;
+        }
+        if (!dialog || (seen->seen && dialog->fileMode() == QFileDialog::Directory))
+            return;
+        if (!seen->seen) {
+            *target = dialog;
+            // Done when that dialog is (a later dialog may reuse its address).
+            QObject::connect(dialog, &QDialog::finished, timer, [timer] {
+                timer->stop();
+                timer->deleteLater();
+            });
+            seen->openedIn = QDir(dialog->directory()).absolutePath();
+            const QStringList selected = dialog->selectedFiles();
+            seen->selected =
+                selected.isEmpty() ? QString() : QFileInfo(selected.first()).fileName();
+            seen->seen = true;
+        }
         if (answer.isEmpty()) {
             dialog->reject();
             return;
@@ -50,6 +68,8 @@ void answerNextDialog(const QString& answer, DialogAnswer* seen) {
                 name->clear();
         } else {
             dialog->selectFile(answer);
+            if (QDir::cleanPath(dialog->selectedFiles().value(0)) != QDir::cleanPath(answer))
+                return;
         }
         QMetaObject::invokeMethod(dialog, &QDialog::accept); // protected in QFileDialog
     });

@@ -13,6 +13,7 @@
 #include "panels/ViewPanel.h"
 #include "panels/WorkPrecisionView.h"
 #include "parallax/bake/ConeMapBaker.h"
+#include "parallax/bake/ConeMapFinish.h"
 #include "parallax/bake/ConeMapReference.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
@@ -669,7 +670,11 @@ private slots:
             bakeConeMap(outcome.request.source->height, outcome.request.wrap, ConeKind::Relaxed);
         quantiseDown(cpu, 65535);
         QVERIFY(outcome.cone.sqrtRatio == cpu.sqrtRatio);
-        QVERIFY(w->statusBar()->currentMessage().contains("on the GPU"));
+        // Said once the view has drawn the new map (the wait the artist saw, with where it baked).
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (preview->update(), w->statusBar()->currentMessage().contains("on the GPU")), 60000);
+        QVERIFY2(w->statusBar()->currentMessage().contains("s after Bake"),
+                 qPrintable(w->statusBar()->currentMessage()));
     }
 
     void cancelledBakeChangesNothing() {

@@ -16,9 +16,9 @@ using namespace glm; // the kernel files speak GLSL
 struct BakeKernel : BakeBindings {
     using BakeBindings::BakeBindings;
 // clang-format off
-#include "trace/GlslSubsetBegin.h"
+#include "glsl/GlslSubsetBegin.h"
 #include "bake/kernels.glsl"
-#include "trace/GlslSubsetEnd.h"
+#include "glsl/GlslSubsetEnd.h"
     // clang-format on
 };
 // NOLINTEND

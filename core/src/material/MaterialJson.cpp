@@ -318,23 +318,24 @@ Result<Material> parseMaterial(std::string_view text, const std::string& source,
     json root;
     // A key given twice in one object: nlohmann keeps the last, another reader may keep the first,
     // so which value the material has would depend on the program. Refused, with where.
+    // Each open object or array keeps only its own key; the pointer is spelled out only for a
+    // duplicate (a copy per level costs the square of the depth: 15 GB for 100 000 levels).
     struct Frame {
         bool object = false;
-        std::string pointer, lastKey;
+        std::string lastKey;
         std::set<std::string> keys;
     };
     std::vector<Frame> frames;
     std::string duplicate;
+    const auto pointerTo = [&frames](const std::string& key) {
+        std::string pointer;
+        for (std::size_t i = 0; i + 1 < frames.size(); ++i)
+            pointer += "/" + (frames[i].object ? Reader::escapeKey(frames[i].lastKey) : "[]");
+        return pointer + "/" + Reader::escapeKey(key);
+    };
     const json::parser_callback_t noDuplicates = [&](int, json::parse_event_t event, json& parsed) {
-        const auto open = [&](bool object) {
-            std::string pointer;
-            if (!frames.empty())
-                pointer = frames.back().pointer + "/" +
-                          (frames.back().object ? Reader::escapeKey(frames.back().lastKey) : "[]");
-            frames.push_back({object, pointer, {}, {}});
-        };
         if (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start)
-            open(event == json::parse_event_t::object_start);
+            frames.push_back({event == json::parse_event_t::object_start, {}, {}});
         else if (event == json::parse_event_t::object_end ||
                  event == json::parse_event_t::array_end)
             frames.pop_back();
@@ -342,7 +343,7 @@ Result<Material> parseMaterial(std::string_view text, const std::string& source,
             Frame& f = frames.back();
             f.lastKey = parsed.get<std::string>();
             if (!f.keys.insert(f.lastKey).second && duplicate.empty())
-                duplicate = f.pointer + "/" + Reader::escapeKey(f.lastKey);
+                duplicate = pointerTo(f.lastKey);
         }
         return true;
     };

@@ -8,9 +8,9 @@
 
 #include "parallax/Result.h"
 #include "parallax/bake/BakeControl.h"
+#include "parallax/bake/NormalGreen.h"
 #include "parallax/heightfield/HeightField.h"
 #include "parallax/image/Image.h"
-#include "parallax/material/Material.h" // NormalGreen
 
 #include <optional>
 

@@ -35,6 +35,7 @@ enum class Removal {
     EarlierExport, // a file an earlier export's manifest listed that this one does not write
     CacheEntry,    // a cache file the cache's own size limit evicts
     Leftover,      // a dead run's temporary (Temporaries.h)
+    Unfinished,    // a file this run wrote for a result it then could not complete
 };
 
 // Removes the regular file (or, for a Leftover, the file or folder tree) at `path`. Refuses

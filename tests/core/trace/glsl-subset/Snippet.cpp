@@ -1,7 +1,7 @@
 // One kernel-style function compiled inside the GLSL-subset region, the way TraceKernel.h
 // compiles shaders/trace/: the ctests core.trace.GlslSubset.* compile it with each SNIPPET and
 // expect the clean one to pass and each violation to be an error naming its check.
-#include "trace/GlslSubsetBegin.h"
+#include "glsl/GlslSubsetBegin.h"
 struct Kernel {
 #if SNIPPET == 0 // clean: float literals, explicit conversions
     float half(float x) {
@@ -21,7 +21,7 @@ struct Kernel {
     }
 #endif
 };
-#include "trace/GlslSubsetEnd.h"
+#include "glsl/GlslSubsetEnd.h"
 
 int main() {
     return static_cast<int>(Kernel().half(2.0f));
