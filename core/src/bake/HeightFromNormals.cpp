@@ -17,7 +17,9 @@ namespace {
 using Complex = std::complex<double>;
 
 // One axis of the separable transform: the DFT of length n (periodic), or the DCT-II of length n
-// through a DFT of length 2n (Makhoul's mirror: the even extension has only cosines).
+// through a DFT of length 2n (Makhoul's mirror: the even extension has only cosines). Not to be
+// shared between threads: kissfft's const transform() writes a mutable scratch buffer for factors
+// other than 2-5 (a shared one gave wrong heights in 5 runs of 12), so each parallel chunk copies.
 class AxisTransform {
 public:
     AxisTransform(int n, bool periodic)
@@ -86,19 +88,21 @@ void solvePoisson(std::vector<Complex>& f, int W, int H, bool periodic, BakeProg
     const AxisTransform tx(W, periodic), ty(H, periodic);
     auto rows = [&](bool back) {
         tbb::parallel_for(tbb::blocked_range<int>(0, H, 16), [&](const tbb::blocked_range<int>& r) {
+            const AxisTransform t = tx; // see AxisTransform: one per thread
             std::vector<Complex> scratch;
             for (int y = r.begin(); y < r.end(); ++y) {
                 Complex* row = f.data() + static_cast<std::size_t>(y) * W;
-                back ? tx.inverse(row, 1, scratch) : tx.forward(row, 1, scratch);
+                back ? t.inverse(row, 1, scratch) : t.forward(row, 1, scratch);
             }
             progress.advance(r.size());
         });
     };
     auto columns = [&](bool back) {
         tbb::parallel_for(tbb::blocked_range<int>(0, W, 16), [&](const tbb::blocked_range<int>& r) {
+            const AxisTransform t = ty; // see AxisTransform: one per thread
             std::vector<Complex> scratch;
             for (int x = r.begin(); x < r.end(); ++x)
-                back ? ty.inverse(f.data() + x, W, scratch) : ty.forward(f.data() + x, W, scratch);
+                back ? t.inverse(f.data() + x, W, scratch) : t.forward(f.data() + x, W, scratch);
             progress.advance(r.size());
         });
     };
