@@ -86,6 +86,8 @@ Material materialFromOptions(const ExportCliOptions& o) {
         const std::vector<NameReading> readings = readMapFileName(o.height.file);
         const NameReading& tagged = readings.front();
         name = tagged.tag && !tagged.glued ? tagged.stem : readings.back().stem;
+        if (name.empty()) // the whole name is a tag (h.png, height.png): the user's name stays
+            name = std::filesystem::path(o.height.file).stem().string();
     }
     m.name = name.empty() ? "material" : name;
     return m;

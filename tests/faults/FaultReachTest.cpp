@@ -606,10 +606,8 @@ void FaultReachTest::exportNeverRemovesAnInput_data() {
         << held;
     QTest::newRow("its height map")
         << QStringList{"export", "--height", "h.png", "--format", "package", "--out", "pkg"}
-        // "h" alone is a height tag (Doom 3's _h) with no stem: the set is named "material".
-        << QStringList{"export",   "--height", "pkg/material_height.png",
-                       "--format", "godot",    "--out",
-                       "pkg",      "--force"}
+        << QStringList{"export", "--height", "pkg/h_height.png", "--format", "godot",
+                       "--out",  "pkg",      "--force"}
         << held;
     QTest::newRow("an albedo given on the command line")
         << QStringList{"export", "--material", "m.json", "--format", "package", "--out", "pkg"}
