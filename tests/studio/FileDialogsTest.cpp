@@ -1,5 +1,7 @@
 // File dialogs start in the folder last chosen for their kind of file, across sessions, and the
-// editor's own dialogs do (widgets/FileDialogs.h). Real QFileDialogs, answered by a timer.
+// editor's own dialogs do (widgets/FileDialogs.h). The real QFileDialogs, set up as the user sees
+// them, answered through the dialog runner instead of exec(): a timer typing into a modal dialog
+// races its folder model and once hung the suite.
 
 #include "widgets/FileDialogs.h"
 
@@ -9,9 +11,6 @@
 #include <QApplication>
 #include <QFile>
 #include <QFileDialog>
-#include <QLineEdit>
-#include <QPointer>
-#include <QTimer>
 #include <memory>
 
 using namespace px;
@@ -20,61 +19,36 @@ using namespace px::studio::test;
 
 namespace {
 
-// The folder the next file dialog opened in; it then chooses `answer` (empty: Cancel).
+// What the next file dialog showed when it opened; it then answers `answer` (empty: Cancel).
 struct DialogAnswer {
     QString openedIn;
     QString selected; // the file name in the dialog's name field when it opened
-    bool seen = false;
+    QFileDialog::FileMode mode = QFileDialog::AnyFile;
+    QFileDialog::AcceptMode accept = QFileDialog::AcceptOpen;
+    int shown = 0;
 };
 
-// A file is chosen again on every tick until the dialog holds it (while its model still lists
-// the folder it may replace the name just typed, and accept() would then only change folder); the
-// timer stops once that dialog, and only that one, has gone.
-void answerNextDialog(const QString& answer, DialogAnswer* seen) {
-    auto* timer = new QTimer;
-    timer->setInterval(10);
-    auto target = std::make_shared<QPointer<QFileDialog>>();
-    QObject::connect(timer, &QTimer::timeout, [timer, answer, seen, target] {
-        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
-        if (seen->seen && (target->isNull() || dialog != target->data())) {
-            timer->stop();
-            timer->deleteLater();
-            return;
-        }
-        if (!dialog || (seen->seen && dialog->fileMode() == QFileDialog::Directory))
-            return;
-        if (!seen->seen) {
-            *target = dialog;
-            // Done when that dialog is (a later dialog may reuse its address).
-            QObject::connect(dialog, &QDialog::finished, timer, [timer] {
-                timer->stop();
-                timer->deleteLater();
-            });
-            seen->openedIn = QDir(dialog->directory()).absolutePath();
-            const QStringList selected = dialog->selectedFiles();
-            seen->selected =
-                selected.isEmpty() ? QString() : QFileInfo(selected.first()).fileName();
-            seen->seen = true;
-        }
-        if (answer.isEmpty()) {
-            dialog->reject();
-            return;
-        }
-        if (dialog->fileMode() == QFileDialog::Directory) {
-            // Go into the folder and choose it with no name typed, as a user does: selectFile()
-            // with a folder races the dialog's model, which may still be listing its parent.
-            dialog->setDirectory(answer);
-            if (auto* name = dialog->findChild<QLineEdit*>("fileNameEdit"))
-                name->clear();
-        } else {
-            dialog->selectFile(answer);
-            if (QDir::cleanPath(dialog->selectedFiles().value(0)) != QDir::cleanPath(answer))
-                return;
-        }
-        QMetaObject::invokeMethod(dialog, &QDialog::accept); // protected in QFileDialog
-    });
-    timer->start();
-}
+// Answers every dialog until it goes out of scope, recording the last one in `seen`.
+class AnswerDialogs {
+public:
+    AnswerDialogs(const QString& answer, DialogAnswer* seen)
+        : m_previous(setDialogRunner([answer, seen](QFileDialog& dialog) {
+              seen->openedIn = QDir(dialog.directory()).absolutePath();
+              const QStringList selected = dialog.selectedFiles();
+              seen->selected =
+                  selected.isEmpty() ? QString() : QFileInfo(selected.first()).fileName();
+              seen->mode = dialog.fileMode();
+              seen->accept = dialog.acceptMode();
+              ++seen->shown;
+              return answer;
+          })) {}
+    ~AnswerDialogs() { setDialogRunner(m_previous); }
+    AnswerDialogs(const AnswerDialogs&) = delete;
+    AnswerDialogs& operator=(const AnswerDialogs&) = delete;
+
+private:
+    DialogRunner m_previous;
+};
 
 QString touch(const QString& path) {
     QDir().mkpath(QFileInfo(path).absolutePath());
@@ -104,21 +78,23 @@ private slots:
         const QString maps = folder("textures"), meshes = folder("meshes");
         const QString fallback = folder("material");
         DialogAnswer a;
-        answerNextDialog(touch(maps + "/bricks_height.png"), &a);
+        const AnswerDialogs answerA(touch(maps + "/bricks_height.png"), &a);
         QCOMPARE(askOpenFile(nullptr, FileKind::Map, "Load", "All files (*)", fallback),
                  maps + "/bricks_height.png");
-        QVERIFY(a.seen);
+        QCOMPARE(a.shown, 1);
+        QCOMPARE(a.mode, QFileDialog::ExistingFile);
+        QCOMPARE(a.accept, QFileDialog::AcceptOpen);
         QCOMPARE(a.openedIn, fallback); // nothing remembered yet: the fallback
         DialogAnswer b;
-        answerNextDialog(touch(meshes + "/torus.obj"), &b);
+        const AnswerDialogs answerB(touch(meshes + "/torus.obj"), &b);
         QCOMPARE(askOpenFile(nullptr, FileKind::Mesh, "Load", "All files (*)", fallback),
                  meshes + "/torus.obj");
         QCOMPARE(b.openedIn, fallback); // the map's folder is the maps' alone
         DialogAnswer c, d;
-        answerNextDialog({}, &c);
+        const AnswerDialogs answerC(QString(), &c);
         QVERIFY(askOpenFile(nullptr, FileKind::Map, "Load", "All files (*)", fallback).isEmpty());
         QCOMPARE(c.openedIn, maps);
-        answerNextDialog({}, &d);
+        const AnswerDialogs answerD(QString(), &d);
         QVERIFY(askOpenFile(nullptr, FileKind::Mesh, "Load", "All files (*)", fallback).isEmpty());
         QCOMPARE(d.openedIn, meshes);
         // A cancelled dialog forgets nothing.
@@ -129,17 +105,18 @@ private slots:
     void saveDialogsSuggestInTheRememberedFolder() {
         const QString pictures = folder("pictures");
         DialogAnswer a;
-        answerNextDialog(pictures + "/shot.png", &a);
+        const AnswerDialogs answerA(pictures + "/shot.png", &a);
         QCOMPARE(askSaveFile(nullptr, FileKind::Picture, "Save", "view.png", "PNG (*.png)"),
                  pictures + "/shot.png");
         DialogAnswer b;
-        answerNextDialog({}, &b);
+        const AnswerDialogs answerB(QString(), &b);
         askSaveFile(nullptr, FileKind::Picture, "Save", "view.png", "PNG (*.png)");
         QCOMPARE(b.openedIn, pictures);
         QCOMPARE(b.selected, QString("view.png"));
+        QCOMPARE(b.accept, QFileDialog::AcceptSave);
         const QString elsewhere = folder("elsewhere");
         DialogAnswer c;
-        answerNextDialog({}, &c);
+        const AnswerDialogs answerC(QString(), &c);
         askSaveFile(nullptr, FileKind::Picture, "Save", elsewhere + "/bricks.png", "PNG (*.png)");
         QCOMPARE(c.openedIn, elsewhere);
     }
@@ -149,8 +126,9 @@ private slots:
         const QString library = folder("library");
         const QString set = folder("library/bricks2");
         DialogAnswer a;
-        answerNextDialog(set, &a);
+        const AnswerDialogs answerA(set, &a);
         QCOMPARE(askFolder(nullptr, FileKind::TextureFolder, "Import"), set);
+        QCOMPARE(a.mode, QFileDialog::Directory);
         QCOMPARE(lastFolder(FileKind::TextureFolder), library);
         rememberChoice(FileKind::ExportFolder, set);
         QCOMPARE(lastFolder(FileKind::ExportFolder), set);
@@ -165,7 +143,7 @@ private slots:
         QVERIFY(lastFolder(FileKind::Environment).isEmpty());
         const QString fallback = folder("here");
         DialogAnswer a;
-        answerNextDialog({}, &a);
+        const AnswerDialogs answerA(QString(), &a);
         askOpenFile(nullptr, FileKind::Environment, "Load", "All files (*)", fallback);
         QCOMPARE(a.openedIn, fallback);
     }
@@ -182,9 +160,9 @@ private slots:
                 load = action;
         QVERIFY(load);
         DialogAnswer a;
-        answerNextDialog({}, &a);
+        const AnswerDialogs answerA(QString(), &a);
         load->trigger();
-        QVERIFY(a.seen);
+        QCOMPARE(a.shown, 1);
         QCOMPARE(a.openedIn, meshes);
     }
 };

@@ -4,6 +4,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QSettings>
+#include <utility>
 
 namespace px::studio {
 
@@ -18,6 +19,27 @@ QString settingsKey(FileKind kind) {
 QString startIn(FileKind kind, const QString& fallback) {
     const QString last = lastFolder(kind);
     return last.isEmpty() ? fallback : last;
+}
+
+QString execDialog(QFileDialog& dialog) {
+    return dialog.exec() == QDialog::Accepted ? dialog.selectedFiles().value(0) : QString();
+}
+
+DialogRunner& runner() {
+    static DialogRunner current = execDialog;
+    return current;
+}
+
+// QFileDialog's static functions, as an object the runner can answer: the same dialog they show
+// (native where the platform has one).
+QString run(QWidget* parent, const QString& title, const QString& start, const QString& filter,
+            QFileDialog::FileMode mode, QFileDialog::AcceptMode accept) {
+    QFileDialog dialog(parent, title, start, filter);
+    dialog.setFileMode(mode);
+    dialog.setAcceptMode(accept);
+    if (mode == QFileDialog::Directory)
+        dialog.setOption(QFileDialog::ShowDirsOnly);
+    return runner()(dialog);
 }
 
 } // namespace
@@ -41,8 +63,8 @@ void rememberChoice(FileKind kind, const QString& chosen) {
 
 QString askOpenFile(QWidget* parent, FileKind kind, const QString& title, const QString& filter,
                     const QString& fallback) {
-    const QString file =
-        QFileDialog::getOpenFileName(parent, title, startIn(kind, fallback), filter);
+    const QString file = run(parent, title, startIn(kind, fallback), filter,
+                             QFileDialog::ExistingFile, QFileDialog::AcceptOpen);
     rememberChoice(kind, file);
     return file;
 }
@@ -53,16 +75,21 @@ QString askSaveFile(QWidget* parent, FileKind kind, const QString& title, const 
     const QString start = QFileInfo(suggestion).isAbsolute() || folder.isEmpty()
                               ? suggestion
                               : QDir(folder).filePath(suggestion);
-    const QString file = QFileDialog::getSaveFileName(parent, title, start, filter);
+    const QString file =
+        run(parent, title, start, filter, QFileDialog::AnyFile, QFileDialog::AcceptSave);
     rememberChoice(kind, file);
     return file;
 }
 
 QString askFolder(QWidget* parent, FileKind kind, const QString& title, const QString& fallback) {
-    const QString folder =
-        QFileDialog::getExistingDirectory(parent, title, startIn(kind, fallback));
+    const QString folder = run(parent, title, startIn(kind, fallback), {}, QFileDialog::Directory,
+                               QFileDialog::AcceptOpen);
     rememberChoice(kind, folder);
     return folder;
+}
+
+DialogRunner setDialogRunner(DialogRunner next) {
+    return std::exchange(runner(), next ? std::move(next) : DialogRunner(execDialog));
 }
 
 } // namespace px::studio

@@ -6,7 +6,9 @@
 // Qt's default.
 
 #include <QString>
+#include <functional>
 
+class QFileDialog;
 class QWidget;
 
 namespace px::studio {
@@ -28,5 +30,11 @@ QString askSaveFile(QWidget* parent, FileKind kind, const QString& title, const 
                     const QString& filter);
 QString askFolder(QWidget* parent, FileKind kind, const QString& title,
                   const QString& fallback = {});
+
+// Runs a dialog set up as above and returns the chosen path, empty for Cancel. The default execs
+// it; tests answer the real, fully set-up dialog without racing its folder model. Returns the
+// previous runner.
+using DialogRunner = std::function<QString(QFileDialog&)>;
+DialogRunner setDialogRunner(DialogRunner runner);
 
 } // namespace px::studio
