@@ -1,6 +1,7 @@
 // A 2-D DDA over the cells the ray crosses for t in [ta, tb], solving each cell's patch exactly.
 // Returns (first root, t reached): root is -1 if there is none in [ta, tb] or the budget ran out.
 
+#define PX_SKIP_MARGIN 4.0e-6f
 vec2 pxWalkCells(vec2 X0, vec2 dXY, float ta, float tb, int budget) {
     float t = ta;
     ivec2 cell = pxCellAt(X0, dXY, t);
@@ -10,7 +11,14 @@ vec2 pxWalkCells(vec2 X0, vec2 dXY, float ta, float tb, int budget) {
     float nextY = pxBorderT(cell.y, X0.y, dXY.y);
     for (int i = 0; i < budget; ++i) {
         float tEnd = min(min(nextX, nextY), tb);
-        float root = pxSolveCell(cell, X0, dXY, t, tEnd);
+        // The patch lies below its highest corner: a ray still above it where it leaves the cell
+        // has no root there, and skips the quadratic (most cells of a long, grazing ray). The
+        // margin covers tEnd's rounding (pxSolvePatch reads up to PX_SPAN_SLACK past it) and the
+        // patch read a rounding outside its cell.
+        vec4 h = pxCellCorners(cell);
+        float top = max(max(h.x, h.y), max(h.z, h.w));
+        bool above = (1.0f - tEnd) - tEnd * (2.0f * PX_SPAN_SLACK) > top + PX_SKIP_MARGIN;
+        float root = above ? -1.0f : pxSolvePatch(h, cell, X0, dXY, t, tEnd);
         if (root >= 0.0f)
             return vec2(root, root);
         t = max(t, tEnd);
