@@ -59,10 +59,12 @@ trap 'rm -rf "$work"' EXIT
 
 if [ "$quick" = 1 ]; then
     sizes="64x64"
+    frame_args=(--min-time=0.02 --map-size=64)
     sample_size=32
     bench_args=(--rays 8 --scales 0.05 --defaults-only --gpu-rays 32 --gpu-frames 1)
 else
     sizes="512x512,1920x1080"
+    frame_args=()
     sample_size=256
     bench_args=(--rays 128 --scales 0.05,0.1 --gpu-rays 1440 --gpu-frames 3)
 fi
@@ -75,7 +77,7 @@ rm -f "$work/bricks.png" "$work/frame.png"
 gl=$(grep '^GL: ' "$work/render-time.txt") || fail "parallax-cli render named no GL context"
 
 echo "Frame times, both kernel flavours (render-bench --sizes=$sizes)..."
-"$bench" --sizes="$sizes" --csv="$work/frame-times.csv" >"$work/render-bench.txt" ||
+"$bench" --sizes="$sizes" "${frame_args[@]}" --csv="$work/frame-times.csv" >"$work/render-bench.txt" ||
     fail "render-bench failed (see $work/render-bench.txt)"
 
 echo "Error against cost with GPU timings (parallax-cli bench --gpu)..."

@@ -4,8 +4,10 @@
 // glFinish on llvmpipe, a GL timer query on real GPUs (FrameTimer.h). Compilation and bakes happen
 // before timing. The table at the end gives each technique's median against `none` and the
 // production kernels' against the verify kernels', all measured in the same run.
-//   render-bench [--sizes=WxH,...] [--csv=FILE] [--benchmark_filter=512]
-//                [--benchmark_repetitions=N]   (N > 1: medians)
+//   render-bench [--sizes=WxH,...] [--csv=FILE] [--min-time=SECONDS] [--map-size=N]
+//                [--benchmark_filter=512] [--benchmark_repetitions=N]   (N > 1: medians)
+// --min-time (default 0.5) and --map-size (default 512) smaller: a quick run that only shows it
+// works (benchmarks/gpu-report.sh --quick, the ctest).
 
 #include "RenderTestSupport.h"
 #include "parallax/io/AtomicWrite.h"
@@ -14,6 +16,7 @@
 
 #include <benchmark/benchmark.h>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <set>
@@ -28,6 +31,8 @@ struct Bench {
     std::unique_ptr<GpuMaterial> gpu;
 };
 
+int gMapSize = 512; // --map-size: the bricks' height map, baked before the first benchmark
+
 Bench& bench() {
     static Bench b = [] {
         Bench made;
@@ -36,7 +41,7 @@ Bench& bench() {
             std::exit(1);
         }
         made.renderer = Renderer::create().value();
-        made.gpu = GpuMaterial::create(test::bricksAssets(512), WrapMode::Repeat).value();
+        made.gpu = GpuMaterial::create(test::bricksAssets(gMapSize), WrapMode::Repeat).value();
         return made;
     }();
     return b;
@@ -114,6 +119,7 @@ int main(int argc, char** argv) {
     std::vector<std::pair<std::string, glm::ivec2>> sizes{{"512x512", {512, 512}},
                                                           {"1920x1080", {1920, 1080}}};
     std::string csvPath;
+    double minTime = 0.5;
     // Our own options first; the rest goes to Google Benchmark.
     int kept = 1;
     for (int i = 1; i < argc; ++i) {
@@ -125,6 +131,22 @@ int main(int argc, char** argv) {
             }
         } else if (std::strncmp(argv[i], "--csv=", 6) == 0) {
             csvPath = argv[i] + 6;
+        } else if (std::strncmp(argv[i], "--min-time=", 11) == 0) {
+            char* end = nullptr;
+            minTime = std::strtod(argv[i] + 11, &end);
+            if (*end != '\0' || !(minTime > 0.0 && minTime <= 60.0)) {
+                std::fprintf(stderr, "error: --min-time=%s is not seconds in (0, 60]\n",
+                             argv[i] + 11);
+                return 2;
+            }
+        } else if (std::strncmp(argv[i], "--map-size=", 11) == 0) {
+            char* end = nullptr;
+            const long n = std::strtol(argv[i] + 11, &end, 10);
+            if (*end != '\0' || n < 16 || n > 8192) {
+                std::fprintf(stderr, "error: --map-size=%s is not a size 16..8192\n", argv[i] + 11);
+                return 2;
+            }
+            gMapSize = static_cast<int>(n);
         } else {
             argv[kept++] = argv[i];
         }
@@ -144,7 +166,7 @@ int main(int argc, char** argv) {
                     [id, f, s](benchmark::State& state) { frame(state, id, f, s); })
                     ->UseManualTime()
                     ->Unit(benchmark::kMillisecond)
-                    ->MinTime(0.5);
+                    ->MinTime(minTime);
             }
         }
     }
