@@ -1,8 +1,9 @@
-// Writing a 4096² map texel by texel through Image::at() (the bakers' and loaders' way) against
-// through one pointer, in the same run: the ratios printed at the end are what the copy-on-write
-// test costs a write (SharedTexels.h), against the pointer loop as the compiler vectorises it and
-// against the same loop kept scalar (no accessor with a test per write can be vectorised).
-// Single-threaded. On a shared machine take the best of several runs (--benchmark_repetitions).
+// Writing a 4096² map texel by texel through Image::at(), and through Image::writer() (the bakers'
+// and loaders' way) against through one pointer, in the same run: the ratios printed at the end are
+// what the copy-on-write test costs a write (SharedTexels.h), against the pointer loop as the
+// compiler vectorises it and against the same loop kept scalar (no accessor with a test per write
+// can be vectorised). Single-threaded. On a shared machine take the best of several runs
+// (--benchmark_repetitions).
 //
 //   parallax-bench-texels
 
@@ -27,6 +28,19 @@ void FillThroughAt(benchmark::State& state) {
             for (int x = 0; x < kSide; ++x)
                 image.at(x, y) = static_cast<float>(x ^ y);
         benchmark::DoNotOptimize(image.pixels.data());
+        benchmark::ClobberMemory();
+    }
+}
+
+// The bulk writers' way: ImageWriter (Image.h), the texels made the image's own once.
+void FillThroughWriter(benchmark::State& state) {
+    Image image(kSide, kSide, 1);
+    for (auto _ : state) { // NOLINT(clang-analyzer-deadcode.DeadStores): the benchmark's loop
+        const ImageWriter put = image.writer();
+        for (int y = 0; y < kSide; ++y)
+            for (int x = 0; x < kSide; ++x)
+                put.at(x, y) = static_cast<float>(x ^ y);
+        benchmark::DoNotOptimize(put.texels);
         benchmark::ClobberMemory();
     }
 }
@@ -58,6 +72,7 @@ FillThroughPointerScalar(benchmark::State& state) {
 }
 
 BENCHMARK(FillThroughAt)->Unit(benchmark::kMillisecond);
+BENCHMARK(FillThroughWriter)->Unit(benchmark::kMillisecond);
 BENCHMARK(FillThroughPointer)->Unit(benchmark::kMillisecond);
 BENCHMARK(FillThroughPointerScalar)->Unit(benchmark::kMillisecond);
 
@@ -86,10 +101,12 @@ int main(int argc, char** argv) {
     const double at = reporter.best["FillThroughAt"];
     const double pointer = reporter.best["FillThroughPointer"];
     const double scalar = reporter.best["FillThroughPointerScalar"];
-    if (at > 0 && pointer > 0 && scalar > 0)
+    const double writer = reporter.best["FillThroughWriter"];
+    if (at > 0 && pointer > 0 && scalar > 0 && writer > 0)
         std::printf("4096² fill, ms of CPU (best run): through at() %.1f; through a pointer %.1f "
-                    "(at() %.2fx), the same kept scalar %.1f (at() %.2fx)\n",
-                    at, pointer, at / pointer, scalar, at / scalar);
+                    "(at() %.2fx), the same kept scalar %.1f (at() %.2fx); through writer() "
+                    "%.1f (%.2fx the pointer)\n",
+                    at, pointer, at / pointer, scalar, at / scalar, writer, writer / pointer);
     benchmark::Shutdown();
     return 0;
 }

@@ -32,10 +32,11 @@ Image toRgb(Image image) {
     if (image.channels >= 3)
         return image;
     Image rgb(image.width, image.height, 3);
+    const ImageWriter put = rgb.writer();
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
             for (int c = 0; c < 3; ++c)
-                rgb.at(x, y, c) = image.at(x, y, 0);
+                put.at(x, y, c) = image.at(x, y, 0);
     return rgb;
 }
 

@@ -18,10 +18,11 @@ namespace {
 // R = height, G = sqrt(ratio) rounded down to 16 bits so a stored cone is never wider.
 Image coneFileImage(const HeightField& height, const ConeMap& cone) {
     Image image(cone.width, cone.height, 3);
+    const ImageWriter put = image.writer();
     for (int y = 0; y < cone.height; ++y) {
         for (int x = 0; x < cone.width; ++x) {
-            image.at(x, y, 0) = height.at(x, y);
-            image.at(x, y, 1) = std::floor(cone.g(x, y) * 65535.0f) / 65535.0f;
+            put.at(x, y, 0) = height.at(x, y);
+            put.at(x, y, 1) = std::floor(cone.g(x, y) * 65535.0f) / 65535.0f;
         }
     }
     return image;

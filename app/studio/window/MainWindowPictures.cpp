@@ -30,10 +30,11 @@ ImageWriteOptions pngOptions() {
 
 // Copies `tile` into `into` with its top-left corner at (x, y).
 void place(Image& into, const Image& tile, int x, int y) {
+    const ImageWriter put = into.writer();
     for (int j = 0; j < tile.height; ++j)
         for (int i = 0; i < tile.width; ++i)
             for (int c = 0; c < into.channels; ++c)
-                into.at(x + i, y + j, c) = tile.at(i, j, std::min(c, tile.channels - 1));
+                put.at(x + i, y + j, c) = tile.at(i, j, std::min(c, tile.channels - 1));
 }
 
 } // namespace

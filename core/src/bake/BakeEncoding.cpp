@@ -43,13 +43,14 @@ HeightField roundHeightsUp(const HeightField& field, PixelFormat format) {
 
 Image encodeConeMap(const HeightField& heights, ConeMap g, PixelFormat format) {
     Image image(g.width, g.height, 3);
+    const ImageWriter put = image.writer();
     const int steps = quantisationSteps(format);
     if (steps > 0)
         quantiseDown(g, steps);
     for (int y = 0; y < g.height; ++y) {
         for (int x = 0; x < g.width; ++x) {
-            image.at(x, y, 0) = roundUpToStep(heights.at(x, y), steps);
-            image.at(x, y, 1) = g.g(x, y);
+            put.at(x, y, 0) = roundUpToStep(heights.at(x, y), steps);
+            put.at(x, y, 1) = g.g(x, y);
         }
     }
     return image;
@@ -69,12 +70,13 @@ Image encodePyramid(const MaxMipPyramid& pyramid, PyramidLayout layout, int leve
             column += pyramid.height(l);
         }
         image = Image(pyramid.width(0) + right, std::max(pyramid.height(0), column), 1);
+        const ImageWriter put = image.writer();
         int row = 0;
         for (int l = 0; l < pyramid.levels(); ++l) {
             const int x0 = l == 0 ? 0 : pyramid.width(0), y0 = l == 0 ? 0 : row;
             for (int y = 0; y < pyramid.height(l); ++y) {
                 for (int x = 0; x < pyramid.width(l); ++x)
-                    image.at(x0 + x, y0 + y) = pyramid.at(l, x, y);
+                    put.at(x0 + x, y0 + y) = pyramid.at(l, x, y);
             }
             if (l > 0)
                 row += pyramid.height(l);

@@ -63,6 +63,7 @@ ConeMap bakeBruteForce(const HeightField& field, WrapMode wrap, ConeKind kind, C
     if (field.empty())
         return cones;
     const bake::BakeBindings bindings(field, wrap);
+    const PlaneWriter put = cones.writer(); // before the threads: SharedTexels.h
     tbb::parallel_for(tbb::blocked_range<int>(0, field.height),
                       [&](const tbb::blocked_range<int>& rows) {
                           BakeKernel k;
@@ -74,7 +75,7 @@ ConeMap bakeBruteForce(const HeightField& field, WrapMode wrap, ConeKind kind, C
                                   float c = ringScan(k, b, hb, cell);
                                   if (kind == ConeKind::Relaxed && hb < k.pxBakeMax)
                                       c = stripScan(k, b, hb, c);
-                                  cones.g(x, y) = std::sqrt(k.pxBakeFinish(c));
+                                  put.at(x, y) = std::sqrt(k.pxBakeFinish(c));
                               }
                           }
                       });

@@ -48,11 +48,12 @@ Image MaxMipPyramid::atlas() const {
     if (m_levels.empty())
         return {};
     Image image(m_levels[0].width, atlasRow(levels()), 1);
+    const ImageWriter put = image.writer();
     for (int l = 0; l < levels(); ++l) {
         const int row = atlasRow(l);
         for (int y = 0; y < height(l); ++y) {
             for (int x = 0; x < width(l); ++x)
-                image.at(x, row + y) = at(l, x, y);
+                put.at(x, row + y) = at(l, x, y);
         }
     }
     return image;

@@ -87,6 +87,7 @@ Result<Image> bakeNormalMap(const HeightField& field, const NormalBakeOptions& o
     Image out(W, H, 3);
     BakeProgress progress(control, H);
     const float* h = field.texels.data();
+    const ImageWriter put = out.writer(); // before the threads: SharedTexels.h
     tbb::parallel_for(tbb::blocked_range<int>(0, H, 16), [&](const tbb::blocked_range<int>& rows) {
         if (progress.stopRequested())
             return;
@@ -96,7 +97,7 @@ Result<Image> bakeNormalMap(const HeightField& field, const NormalBakeOptions& o
                                    h + static_cast<std::size_t>(y) * W,
                                    h + static_cast<std::size_t>(ty.hi[y]) * W};
             const float sy = ty.scale[y];
-            float* o = &out.at(0, y);
+            float* o = &put.at(0, y);
             for (int x = 0; x < W; ++x) {
                 const int xl = tx.lo[x], xh = tx.hi[x];
                 float du = 0.0f, dv = 0.0f;

@@ -17,6 +17,7 @@ Result<Image> convertNormalMap(const Image& normals, NormalGreen from, NormalGre
                          "a normal map needs at least red and green, this image has one channel");
     const bool flip = from != to;
     Image out(normals.width, normals.height, 3);
+    const ImageWriter put = out.writer();
     for (int y = 0; y < normals.height; ++y) {
         for (int x = 0; x < normals.width; ++x) {
             const float r = normals.at(x, y, 0), g = normals.at(x, y, 1);
@@ -28,9 +29,9 @@ Result<Image> convertNormalMap(const Image& normals, NormalGreen from, NormalGre
                 const float nx = 2.0f * r - 1.0f, ny = 2.0f * g - 1.0f;
                 b = std::sqrt(std::max(0.0f, 1.0f - nx * nx - ny * ny)) * 0.5f + 0.5f;
             }
-            out.at(x, y, 0) = r;
-            out.at(x, y, 1) = flip ? 1.0f - g : g;
-            out.at(x, y, 2) = b;
+            put.at(x, y, 0) = r;
+            put.at(x, y, 1) = flip ? 1.0f - g : g;
+            put.at(x, y, 2) = b;
         }
     }
     return out;

@@ -19,6 +19,7 @@ Result<ConeMap> bakeQuickConeMap(const HeightField& field, WrapMode wrap,
     bindings.cells = &pyramid;
     bindings.pxCellLevels = pyramid.levels();
     ConeMap cones(ConeKind::Conservative, field.width, field.height);
+    const PlaneWriter put = cones.writer(); // before the threads: SharedTexels.h
     BakeProgress progress(control, field.height);
     tbb::parallel_for(tbb::blocked_range<int>(0, field.height, 2),
                       [&](const tbb::blocked_range<int>& rows) {
@@ -28,7 +29,7 @@ Result<ConeMap> bakeQuickConeMap(const HeightField& field, WrapMode wrap,
                           static_cast<bake::BakeBindings&>(kernel) = bindings;
                           for (int y = rows.begin(); y < rows.end(); ++y) {
                               for (int x = 0; x < field.width; ++x)
-                                  cones.g(x, y) = kernel.pxQuickResult(glm::ivec2(x, y));
+                                  put.at(x, y) = kernel.pxQuickResult(glm::ivec2(x, y));
                           }
                           progress.advance(rows.size());
                       });

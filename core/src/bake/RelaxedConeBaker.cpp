@@ -42,6 +42,7 @@ Result<ConeMap> bakeRelaxedConeMap(const HeightField& field, WrapMode wrap,
     bindings.pxFallTop = fall.top();
     bindings.pxFallUnit = fall.unit();
     ConeMap cones(ConeKind::Relaxed, field.width, field.height);
+    const PlaneWriter put = cones.writer(); // before the threads: SharedTexels.h
     tbb::parallel_for(
         tbb::blocked_range<int>(0, tileRows, 4), [&](const tbb::blocked_range<int>& rows) {
             bake::BakeKernel kernel;
@@ -65,7 +66,7 @@ Result<ConeMap> bakeRelaxedConeMap(const HeightField& field, WrapMode wrap,
                                 : glm::ivec3(0);
                     kernel.pxRelaxedTile(glm::ivec2(tx, ty), glm::ivec2(tw, th));
                     for (int k = 0; k < tw * th; ++k)
-                        cones.g(tx + k % tw, ty + k / tw) = kernel.pxRelaxedResult(k);
+                        put.at(tx + k % tw, ty + k / tw) = kernel.pxRelaxedResult(k);
                     for (int j = 0; j < th; ++j)
                         kernel.pxSeedRow[j] = kernel.pxTileWitness[j * tw + tw - 1];
                     for (int i = 0; i < tw; ++i)

@@ -15,11 +15,12 @@ Image heightImage(const HeightField& field, bool asDepth) {
 Image coneImage(const HeightField& field, const ConeMap& cone, int bits) {
     const float steps = bits == 8 ? 255.0f : bits == 16 ? 65535.0f : 0.0f;
     Image image(field.width, field.height, 2);
+    const ImageWriter put = image.writer();
     for (int y = 0; y < field.height; ++y) {
         for (int x = 0; x < field.width; ++x) {
             const float g = std::clamp(cone.g(x, y), 0.0f, 1.0f);
-            image.at(x, y, 0) = field.at(x, y);
-            image.at(x, y, 1) = steps > 0.0f ? std::floor(g * steps) / steps : g;
+            put.at(x, y, 0) = field.at(x, y);
+            put.at(x, y, 1) = steps > 0.0f ? std::floor(g * steps) / steps : g;
         }
     }
     return image;
@@ -27,13 +28,14 @@ Image coneImage(const HeightField& field, const ConeMap& cone, int bits) {
 
 Image specularLevel(const Image& specular) {
     Image out(specular.width, specular.height, 1);
+    const ImageWriter put = out.writer();
     const int colours = specular.channels >= 3 ? 3 : 1; // grey + alpha: the grey
     for (int y = 0; y < specular.height; ++y) {
         for (int x = 0; x < specular.width; ++x) {
             float level = specular.at(x, y, 0);
             for (int c = 1; c < colours; ++c)
                 level = std::max(level, specular.at(x, y, c));
-            out.at(x, y, 0) = level;
+            put.at(x, y, 0) = level;
         }
     }
     return out;
@@ -43,6 +45,7 @@ Image resample(const Image& image, int width, int height, WrapMode wrap) {
     if (image.width == width && image.height == height)
         return image;
     Image out(width, height, image.channels);
+    const ImageWriter put = out.writer();
     for (int y = 0; y < height; ++y) {
         const double sy = (y + 0.5) * image.height / height - 0.5;
         const int y0 = static_cast<int>(std::floor(sy));
@@ -58,7 +61,7 @@ Image resample(const Image& image, int width, int height, WrapMode wrap) {
             for (int c = 0; c < image.channels; ++c) {
                 const float top = image.at(xa, ya, c) * (1 - fx) + image.at(xb, ya, c) * fx;
                 const float bottom = image.at(xa, yb, c) * (1 - fx) + image.at(xb, yb, c) * fx;
-                out.at(x, y, c) = top * (1 - fy) + bottom * fy;
+                put.at(x, y, c) = top * (1 - fy) + bottom * fy;
             }
         }
     }
@@ -77,12 +80,13 @@ std::optional<Image> packChannels(const ChannelSource* sources, int channels, Wr
     if (width == 0)
         return std::nullopt;
     Image out(width, height, channels);
+    const ImageWriter put = out.writer();
     for (int c = 0; c < channels; ++c) {
         const ChannelSource& s = sources[c];
         if (!s.image || s.image->empty()) {
             for (int y = 0; y < height; ++y) {
                 for (int x = 0; x < width; ++x)
-                    out.at(x, y, c) = s.constant;
+                    put.at(x, y, c) = s.constant;
             }
             continue;
         }
@@ -91,7 +95,7 @@ std::optional<Image> packChannels(const ChannelSource* sources, int channels, Wr
         for (int y = 0; y < height; ++y) {
             for (int x = 0; x < width; ++x) {
                 const float v = scaled.at(x, y, channel);
-                out.at(x, y, c) = s.invert ? 1.0f - v : v;
+                put.at(x, y, c) = s.invert ? 1.0f - v : v;
             }
         }
     }

@@ -88,11 +88,12 @@ struct PlaneMesh {
 Image specularTexture(const Image& specular, bool grey) {
     const Image level = specularLevel(specular);
     Image out(specular.width, specular.height, 4);
+    const ImageWriter put = out.writer();
     for (int y = 0; y < specular.height; ++y) {
         for (int x = 0; x < specular.width; ++x) {
             for (int c = 0; c < 3; ++c)
-                out.at(x, y, c) = grey ? level.at(x, y, 0) : specular.at(x, y, c);
-            out.at(x, y, 3) = grey ? level.at(x, y, 0) : 1.0f;
+                put.at(x, y, c) = grey ? level.at(x, y, 0) : specular.at(x, y, c);
+            put.at(x, y, 3) = grey ? level.at(x, y, 0) : 1.0f;
         }
     }
     return out;

@@ -88,9 +88,11 @@ Result<HeightField> extractChannel(Image image, const HeightLoadOptions& options
         field.texels = std::move(image.pixels);
     } else {
         field = HeightField(image.width, image.height);
+        const PlaneWriter put = field.writer();
         for (int y = 0; y < image.height; ++y) {
             for (int x = 0; x < image.width; ++x)
-                field.at(x, y) = luma ? luminance(image, x, y) : image.at(x, y, channel);
+                put.at(x, y) =
+                    luma ? luminance(image, x, y) : std::as_const(image).at(x, y, channel);
         }
     }
     return field;

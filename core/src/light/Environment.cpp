@@ -80,6 +80,7 @@ Result<Image> loadEnvironment(const std::string& path) {
     // Grey (with or without alpha) is grey in every channel; alpha is no light.
     const int colours = in.channels >= 3 ? 3 : 1;
     Image rgb(in.width, in.height, 3);
+    const ImageWriter put = rgb.writer();
     for (int y = 0; y < in.height; ++y) {
         for (int x = 0; x < in.width; ++x) {
             for (int c = 0; c < 3; ++c) {
@@ -87,7 +88,7 @@ Result<Image> loadEnvironment(const std::string& path) {
                 if (v < 0.0f)
                     return fileError(path, "has negative radiance at texel (" + std::to_string(x) +
                                                ", " + std::to_string(y) + ")");
-                rgb.at(x, y, c) = v;
+                put.at(x, y, c) = v;
             }
         }
     }
@@ -101,6 +102,7 @@ Image makeSkyEnvironment(glm::vec3 sunDirection, int width) {
     const glm::vec3 zenith(0.18f, 0.36f, 0.85f), horizon(0.95f, 0.98f, 1.05f);
     const glm::vec3 ground(0.32f, 0.28f, 0.24f), sunColor(1.0f, 0.92f, 0.8f);
     Image sky(width, width / 2, 3);
+    const ImageWriter put = sky.writer();
     for (int y = 0; y < sky.height; ++y) {
         for (int x = 0; x < sky.width; ++x) {
             const glm::vec3 d =
@@ -118,7 +120,7 @@ Image makeSkyEnvironment(glm::vec3 sunDirection, int width) {
                   0.6f * std::exp((cosine - 1.0f) * 12.0f)) *
                  glm::smoothstep(-0.02f, 0.02f, d.y);
             for (int k = 0; k < 3; ++k)
-                sky.at(x, y, k) = c[k];
+                put.at(x, y, k) = c[k];
         }
     }
     return sky;

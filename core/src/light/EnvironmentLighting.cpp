@@ -130,13 +130,14 @@ PrefilteredEnvironment prefilterEnvironment(const Image& map, int baseWidth, int
         const float roughness = static_cast<float>(level) / static_cast<float>(levels - 1);
         Image img(std::max(2, out.specular[0].width >> level),
                   std::max(1, out.specular[0].width >> (level + 1)), 3);
+        const ImageWriter put = img.writer();
         tbb::parallel_for(0, img.height, [&](int y) {
             for (int x = 0; x < img.width; ++x) {
                 const glm::vec3 n =
                     equirectDirection({(x + 0.5f) / img.width, (y + 0.5f) / img.height});
                 const glm::vec3 c = prefiltered(pyramid, n, roughness, 128);
                 for (int k = 0; k < 3; ++k)
-                    img.at(x, y, k) = c[k];
+                    put.at(x, y, k) = c[k];
             }
         });
         out.specular.push_back(std::move(img));
@@ -146,6 +147,7 @@ PrefilteredEnvironment prefilterEnvironment(const Image& map, int baseWidth, int
 
 Image makeSplitSumTable(int size, int samples) {
     Image table(size, size, 2);
+    const ImageWriter put = table.writer();
     for (int j = 0; j < size; ++j) {
         const float roughness = (j + 0.5f) / size;
         const float alpha = roughness * roughness, k = alpha / 2.0f;
@@ -166,8 +168,8 @@ Image makeSplitSumTable(int size, int samples) {
                 a += (1.0f - fresnel) * visibility;
                 b += fresnel * visibility;
             }
-            table.at(i, j, 0) = a / samples;
-            table.at(i, j, 1) = b / samples;
+            put.at(i, j, 0) = a / samples;
+            put.at(i, j, 1) = b / samples;
         }
     }
     return table;

@@ -64,10 +64,11 @@ ImageTraits imageTraits(const Image& image) {
 
 HeightField channelField(const Image& image, int channel) {
     HeightField field(image.width, image.height);
+    const PlaneWriter put = field.writer();
     const int c = std::min(channel, image.channels - 1);
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x)
-            field.at(x, y) = image.at(x, y, c);
+            put.at(x, y) = image.at(x, y, c);
     }
     return field;
 }

@@ -174,6 +174,7 @@ std::vector<int> labelRaisedRegions(const HeightField& field, float threshold, W
 Image makeProceduralAlbedo(ProceduralMap kind, const HeightField& field, unsigned seed,
                            WrapMode wrap) {
     Image image(field.width, field.height, 3);
+    const ImageWriter put = image.writer();
     if (field.empty())
         return image;
     const Look look = lookFor(kind);
@@ -200,7 +201,7 @@ Image makeProceduralAlbedo(ProceduralMap kind, const HeightField& field, unsigne
             // Cavities read darker: a cheap ambient-occlusion look from the height itself.
             colour = scaled(colour, 0.8f + 0.2f * std::clamp(hgt * 1.5f, 0.0f, 1.0f));
             for (int c = 0; c < 3; ++c)
-                image.at(x, y, c) = std::clamp(colour[c], 0.0f, 1.0f);
+                put.at(x, y, c) = std::clamp(colour[c], 0.0f, 1.0f);
         }
     }
     return image;

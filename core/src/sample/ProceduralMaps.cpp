@@ -120,6 +120,7 @@ HeightField makeProceduralMap(ProceduralMap kind, int width, int height, unsigne
     if (isAdversarial(kind))
         return makeAdversarialMap(kind, width, height, seed);
     HeightField field(width, height);
+    const PlaneWriter put = field.writer();
     std::mt19937 random(seed);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     for (int y = 0; y < height; ++y) {
@@ -163,7 +164,7 @@ HeightField makeProceduralMap(ProceduralMap kind, int width, int height, unsigne
             default: // the adversarial maps, made above
                 break;
             }
-            field.at(x, y) = std::clamp(h, 0.0f, 1.0f);
+            put.at(x, y) = std::clamp(h, 0.0f, 1.0f);
         }
     }
     return field;

@@ -135,6 +135,46 @@ private slots:
         }
     }
 
+    // A writer makes the texels its map's own once: a copy taken before keeps its texels, and
+    // threads writing through one writer all land in the one buffer (through g() they would each
+    // try to detach a shared map at once). Image, height field and cone map alike.
+    void writersDetachOnceForEveryThread() {
+        for (int round = 0; round < 10; ++round) {
+            ConeMap cones(ConeKind::Relaxed, 96, 64);
+            const ConeMap before = cones; // shared until the writer is taken
+            const PlaneWriter put = cones.writer();
+            QVERIFY(!cones.sqrtRatio.sharesWith(before.sqrtRatio));
+            std::vector<std::thread> threads;
+            for (int k = 0; k < 4; ++k) {
+                threads.emplace_back([&put, k] {
+                    for (int y = k; y < 64; y += 4)
+                        for (int x = 0; x < 96; ++x)
+                            put.at(x, y) = static_cast<float>(x + 100 * y) / 8192.0f;
+                });
+            }
+            for (std::thread& t : threads)
+                t.join();
+            for (int y = 0; y < 64; ++y)
+                for (int x = 0; x < 96; ++x) {
+                    QCOMPARE(std::as_const(cones).g(x, y),
+                             static_cast<float>(x + 100 * y) / 8192.0f);
+                    QCOMPARE(before.g(x, y), 1.0f);
+                }
+        }
+        HeightField field(5, 3, 0.5f);
+        const HeightField kept = field;
+        field.writer().at(4, 2) = 1.0f;
+        QCOMPARE(std::as_const(field).at(4, 2), 1.0f);
+        QCOMPARE(kept.at(4, 2), 0.5f);
+        Image image(3, 2, 4);
+        const Image original = image;
+        const ImageWriter put = image.writer();
+        put.at(2, 1, 3) = 0.25f;
+        QCOMPARE(std::as_const(image).at(2, 1, 3), 0.25f);
+        QCOMPARE(std::as_const(image).pixels[image.index(2, 1, 3)], 0.25f);
+        QCOMPARE(original.at(2, 1, 3), 0.0f);
+    }
+
     // A moved-from map is empty, as a moved-from vector is; its old texels live on in the target.
     void movesTakeTheTexels() {
         ConeMap cones(ConeKind::Relaxed, 8, 8);

@@ -3,6 +3,7 @@
 // the G channel stores it; the ratio itself is c = g^2, in uv units per unit of normalised height.
 // Heights (the R channel on disk) come from the height field the map was baked from.
 
+#include "parallax/image/Image.h"
 #include "parallax/image/SharedTexels.h"
 
 #include <cstddef>
@@ -23,6 +24,7 @@ struct ConeMap {
 
     float& g(int x, int y) { return sqrtRatio[static_cast<std::size_t>(y) * width + x]; }
     float g(int x, int y) const { return sqrtRatio[static_cast<std::size_t>(y) * width + x]; }
+    PlaneWriter writer() { return {sqrtRatio.data(), width}; } // Image.h
     float ratio(int x, int y) const { return g(x, y) * g(x, y); }
 };
 

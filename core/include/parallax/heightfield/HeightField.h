@@ -19,6 +19,7 @@ struct HeightField {
 
     float& at(int x, int y) { return texels[static_cast<std::size_t>(y) * width + x]; }
     float at(int x, int y) const { return texels[static_cast<std::size_t>(y) * width + x]; }
+    PlaneWriter writer() { return {texels.data(), width}; } // Image.h
     bool empty() const { return width <= 0 || height <= 0; }
 
     float maxHeight() const;

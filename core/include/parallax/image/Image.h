@@ -7,6 +7,27 @@
 
 namespace px {
 
+// Writing many texels of an image (Image::writer()): its texels made its own once, then plain
+// pointer writes the compiler can vectorise; at() tests ownership on every write
+// (SharedTexels.h), which keeps a fill loop scalar. Valid until the image is copied or assigned.
+struct ImageWriter {
+    float* texels;
+    int width;
+    int channels;
+    float& at(int x, int y, int c = 0) const {
+        return texels[(static_cast<std::size_t>(y) * width + x) * channels + c];
+    }
+};
+
+// The same for a one-channel plane (HeightField::writer(), ConeMap::writer()). Take it before a
+// parallel loop: writers on several threads through at() would each try to make the texels their
+// own at once.
+struct PlaneWriter {
+    float* texels;
+    int width;
+    float& at(int x, int y) const { return texels[static_cast<std::size_t>(y) * width + x]; }
+};
+
 struct Image {
     int width = 0;
     int height = 0;
@@ -23,6 +44,7 @@ struct Image {
     }
     float& at(int x, int y, int c = 0) { return pixels[index(x, y, c)]; }
     float at(int x, int y, int c = 0) const { return pixels[index(x, y, c)]; }
+    ImageWriter writer() { return {pixels.data(), width, channels}; }
     bool empty() const { return width <= 0 || height <= 0 || channels <= 0; }
 };
 
