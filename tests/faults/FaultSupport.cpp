@@ -1,5 +1,8 @@
 #include "FaultSupport.h"
 
+#include "parallax/image/ImageFile.h"
+#include "parallax/sample/ProceduralMaps.h"
+
 #include <QDir>
 #include <QDirIterator>
 #include <QElapsedTimer>
@@ -10,6 +13,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <sys/mount.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -52,6 +56,35 @@ void writeFile(const QString& path, const QByteArray& bytes) {
     QFile file(path);
     QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
     QCOMPARE(file.write(bytes), bytes.size());
+}
+
+bool writeSample(const QString& path, const QString& name, int size, unsigned seed, int bits) {
+    const std::optional<ProceduralMap> kind = parseProceduralMap(name.toStdString());
+    const Result<PixelFormat> format = pixelFormatFromBits(bits);
+    if (!kind || !format) {
+        qWarning("no sample %s at %d bits", qPrintable(name), bits);
+        return false;
+    }
+    ImageWriteOptions options;
+    options.format = *format;
+    const Status written = writeImage(
+        path.toStdString(), makeProceduralMap(*kind, size, size, seed).toImage(), options);
+    if (!written)
+        qWarning("%s", written.error().message.c_str());
+    return static_cast<bool>(written);
+}
+
+bool copyFolder(const QString& from, const QString& to) {
+    std::error_code ec;
+    std::filesystem::remove_all(to.toStdString(), ec);
+    if (!ec)
+        std::filesystem::copy(from.toStdString(), to.toStdString(),
+                              std::filesystem::copy_options::recursive |
+                                  std::filesystem::copy_options::copy_symlinks,
+                              ec);
+    if (ec)
+        qWarning("copying %s to %s: %s", qPrintable(from), qPrintable(to), ec.message().c_str());
+    return !ec;
 }
 
 QMap<QString, QByteArray> snapshot(const QString& folder) {

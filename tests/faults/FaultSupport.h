@@ -24,6 +24,17 @@ CliRun runCli(const QString& folder, const QStringList& arguments,
 // Writes `bytes` to `path` (a test's input file), replacing it.
 void writeFile(const QString& path, const QByteArray& bytes);
 
+// Writes the procedural map `name` to `path` byte for byte as `parallax-cli sample NAME --size SIZE
+// --seed SEED --bits BITS --out PATH` does (the same core calls, without a process): an input
+// that a case needs but does not test. False, with a warning, on failure.
+bool writeSample(const QString& path, const QString& name, int size, unsigned seed = 1,
+                 int bits = 16);
+
+// Replaces `to` with a copy of the folder `from` (files and folders; every file a new inode):
+// a case's starting folder copied from a template made once, instead of running the CLI again
+// for every case (each run costs half a second of start-up). False, with a warning, on failure.
+bool copyFolder(const QString& from, const QString& to);
+
 // Every file and folder under `folder` (hidden ones included), with the bytes of each file (a
 // symbolic link: its target; a FIFO, socket or device: its kind).
 QMap<QString, QByteArray> snapshot(const QString& folder);
@@ -57,9 +68,17 @@ void unmount(const QString& folder);
 // `reason`, the folder byte-identical afterwards and nothing left behind.
 #define PX_EXPECT_CLEAN_FAILURE(folder, args, env, rc, file, reason)                               \
     do {                                                                                           \
+        QString said_;                                                                             \
+        PX_EXPECT_CLEAN_FAILURE_SAYING(folder, args, env, rc, file, reason, said_);                \
+    } while (false)
+
+// The same, keeping what the run printed in `said` (a QString) for further checks.
+#define PX_EXPECT_CLEAN_FAILURE_SAYING(folder, args, env, rc, file, reason, said)                  \
+    do {                                                                                           \
         const auto before_ = px::faults::snapshot(folder);                                         \
         const px::faults::CliRun run_ = px::faults::runCli(folder, args, env);                     \
         const auto after_ = px::faults::snapshot(folder);                                          \
+        (said) = run_.output;                                                                      \
         const bool named_ = run_.output.contains("error: ") && run_.output.contains(file) &&       \
                             !run_.output.contains(                                                 \
                                 QRegularExpression("\\.tmp[0-9]+-|(export|set)-(tmp|old)[0-9]"));  \
