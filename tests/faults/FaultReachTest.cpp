@@ -263,17 +263,26 @@ void FaultReachTest::specialFileAsOutput_data() {
         {"stability", {"stability", "--case", "flat-0", "--rays", "4", "--csv", "OUT.png"}},
         {"import", {"import", "set", "--out", "OUT.png", "--force"}},
     };
+    // Every writer meets two of the four kinds, turn by turn, and every kind three or four writers
+    // (PX_FAULTS_ALL=1: all four each): the kinds are told apart in one function
+    // (checkReplaceable), and a writer that went round it would fail under any of them.
+    const QStringList kinds = {"fifo", "link", "dangling", "socket"};
+    int w = 0;
     for (const auto& [name, args] : writers) {
-        for (const char* kind : {"fifo", "link", "dangling", "socket"}) {
+        for (int k = 0; k < kinds.size(); ++k) {
+            if (!takesCase(w, k, static_cast<int>(kinds.size()), 2))
+                continue;
+            const QString kind = kinds[k];
             QStringList a = args;
             a.replaceInStrings("OUT", QString("special-") + kind);
-            const QString reason = QString(kind) == "fifo"     ? fifo
-                                   : QString(kind) == "socket" ? socket
-                                   : QString(kind) == "link"   ? linkedFifo
-                                                               : link;
+            const QString reason = kind == "fifo"     ? fifo
+                                   : kind == "socket" ? socket
+                                   : kind == "link"   ? linkedFifo
+                                                      : link;
             QTest::newRow(qPrintable(name + " into a " + kind))
-                << QString(kind) << a << QString("special-") + kind + ".png" << reason;
+                << kind << a << "special-" + kind + ".png" << reason;
         }
+        ++w;
     }
     QTest::newRow("turntable frame 1 a FIFO")
         << "frames" << QStringList{"render", "--height", "h.png", "--turntable", "2",

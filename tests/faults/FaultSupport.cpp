@@ -74,6 +74,11 @@ bool writeSample(const QString& path, const QString& name, int size, unsigned se
     return static_cast<bool>(written);
 }
 
+bool takesCase(int a, int b, int count, int per) {
+    static const bool all = qEnvironmentVariableIntValue("PX_FAULTS_ALL") == 1;
+    return all || ((b - a) % count + count) % count < per;
+}
+
 bool copyFolder(const QString& from, const QString& to) {
     std::error_code ec;
     std::filesystem::remove_all(to.toStdString(), ec);

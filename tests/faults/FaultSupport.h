@@ -30,6 +30,12 @@ void writeFile(const QString& path, const QByteArray& bytes);
 bool writeSample(const QString& path, const QString& name, int size, unsigned seed = 1,
                  int bits = 16);
 
+// Whether case (a, b) of a product A x B runs, where B's values (a signal, a byte, a kind of
+// special file) are told apart in one function whatever A is (which command reaches it): each a
+// takes `per` of B's `count` values, turn by turn from its own index, so every value of A and of B
+// is still tried, several times over. PX_FAULTS_ALL=1 runs the whole product.
+bool takesCase(int a, int b, int count, int per);
+
 // Replaces `to` with a copy of the folder `from` (files and folders; every file a new inode):
 // a case's starting folder copied from a template made once, instead of running the CLI again
 // for every case (each run costs half a second of start-up). False, with a warning, on failure.
