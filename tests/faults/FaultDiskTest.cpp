@@ -192,5 +192,5 @@ void FaultDiskTest::exportOnFullDisk() {
                             {"PX_TEST_FAIL_WRITE_AT=100"}, 1, "earlier", "No space left on device");
 }
 
-QTEST_GUILESS_MAIN(FaultDiskTest)
+PX_FAULTS_MAIN(FaultDiskTest)
 #include "FaultDiskTest.moc"

@@ -646,5 +646,5 @@ void FaultReachTest::exportNeverRemovesAnInput() {
     QDir(m_dir + "/pkg").removeRecursively();
 }
 
-QTEST_GUILESS_MAIN(FaultReachTest)
+PX_FAULTS_MAIN(FaultReachTest)
 #include "FaultReachTest.moc"

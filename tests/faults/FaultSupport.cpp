@@ -1,5 +1,6 @@
 #include "FaultSupport.h"
 
+#include "TestSupport.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/sample/ProceduralMaps.h"
 
@@ -7,6 +8,7 @@
 #include <QDirIterator>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QMetaMethod>
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QTest>
@@ -185,6 +187,35 @@ bool remountReadOnly(const QString& folder) {
 
 void unmount(const QString& folder) {
     ::umount2(folder.toLocal8Bit().constData(), MNT_DETACH);
+}
+
+int execShard(QObject* test, int argc, char** argv) {
+    QStringList arguments;
+    for (int i = 0; i < argc; ++i)
+        arguments << QString::fromLocal8Bit(argv[i]);
+    const px::test::TestShard shard = px::test::testShard();
+    if (shard.count > 1) {
+        const QMetaObject* meta = test->metaObject();
+        const QStringList fixtures = {"initTestCase", "cleanupTestCase", "init", "cleanup"};
+        std::size_t function = 0;
+        int taken = 0;
+        for (int m = meta->methodOffset(); m < meta->methodCount(); ++m) {
+            const QMetaMethod method = meta->method(m);
+            const QString name = QString::fromLatin1(method.name());
+            if (method.methodType() != QMetaMethod::Slot ||
+                method.access() != QMetaMethod::Private || fixtures.contains(name) ||
+                name.endsWith("_data"))
+                continue;
+            if (shard.takes(function++)) {
+                arguments << name;
+                ++taken;
+            }
+        }
+        if (taken == 0) // no names would run them all
+            qFatal("shard %zu/%zu takes none of the %zu test functions", shard.index, shard.count,
+                   function);
+    }
+    return QTest::qExec(test, arguments);
 }
 
 } // namespace px::faults

@@ -4,6 +4,7 @@
 
 #include <QByteArray>
 #include <QMap>
+#include <QObject>
 #include <QString>
 #include <QStringList>
 
@@ -68,7 +69,20 @@ bool mountTmpfs(const QString& folder, int kilobytes, QString& why);
 bool remountReadOnly(const QString& folder);
 void unmount(const QString& folder);
 
+// Runs the test object's functions as QTest::qExec does; under PX_TEST_SHARD=i/n (ctest's shards,
+// px_shard_test) only every n-th of its test functions from the i-th, whole with their rows.
+int execShard(QObject* test, int argc, char** argv);
+
 } // namespace px::faults
+
+// QTEST_GUILESS_MAIN, with the test's functions split between ctest's shards (execShard).
+#define PX_FAULTS_MAIN(TestObject)                                                                 \
+    int main(int argc, char** argv) {                                                              \
+        QCoreApplication app(argc, argv);                                                          \
+        TestObject test;                                                                           \
+        QTEST_SET_MAIN_SOURCE_PATH                                                                 \
+        return px::faults::execShard(&test, argc, argv);                                           \
+    }
 
 // Runs a case that must fail cleanly: status `rc`, the message naming `file` and matching
 // `reason`, the folder byte-identical afterwards and nothing left behind.
