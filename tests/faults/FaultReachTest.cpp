@@ -272,7 +272,7 @@ void FaultReachTest::specialFileAsOutput_data() {
         for (int k = 0; k < kinds.size(); ++k) {
             if (!takesCase(w, k, static_cast<int>(kinds.size()), 2))
                 continue;
-            const QString kind = kinds[k];
+            const QString& kind = kinds[k];
             QStringList a = args;
             a.replaceInStrings("OUT", QString("special-") + kind);
             const QString reason = kind == "fifo"     ? fifo
