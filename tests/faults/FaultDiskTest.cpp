@@ -75,7 +75,7 @@ void FaultDiskTest::initTestCase() {
 }
 
 void FaultDiskTest::prepare(const QString& folder) {
-    QCOMPARE(runCli(folder, {"sample", "noise", "--size", "32", "--out", "h.png"}).status, 0);
+    QVERIFY(writeSample(folder + "/h.png", "noise", 32));
     for (const char* previous :
          {"out.png", "out.exr", "out.tif", "out.csv", "out.svg", "out.frag"}) {
         QFile file(folder + "/" + previous);
@@ -84,12 +84,22 @@ void FaultDiskTest::prepare(const QString& folder) {
     }
 }
 
+// Every writer at two of bytes 0 (nothing written), 1 and 57 (part of the file), turn by turn:
+// where a file fails is decided in one place, the checked writer every command writes through
+// (writeFileAtomically), and every byte is tried under eight writers (PX_FAULTS_ALL=1: all three
+// under each).
 void FaultDiskTest::injectedFullDisk_data() {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<int>("failAt");
+    const QList<int> bytes = {0, 1, 57};
+    int writer = 0;
     for (const auto& [name, args] : writers()) {
-        for (int at : {0, 1, 57})
-            QTest::newRow(qPrintable(name + " at byte " + QString::number(at))) << args << at;
+        for (int b = 0; b < bytes.size(); ++b) {
+            if (takesCase(writer, b, static_cast<int>(bytes.size()), 2))
+                QTest::newRow(qPrintable(name + " at byte " + QString::number(bytes[b])))
+                    << args << bytes[b];
+        }
+        ++writer;
     }
 }
 
@@ -175,13 +185,12 @@ void FaultDiskTest::exportOnFullDisk() {
                 QStringList({"export", "--height", "h.png", "--format", format, "--out", "fresh"}),
                 {QString("PX_TEST_FAIL_WRITE_AT=") + at}, 1, "fresh", "No space left on device");
         }
-        PX_EXPECT_CLEAN_FAILURE(folder,
-                                QStringList({"export", "--height", "h.png", "--format", "unity",
-                                             "--out", "earlier", "--force"}),
-                                {"PX_TEST_FAIL_WRITE_AT=100"}, 1, "earlier",
-                                "No space left on device");
     }
+    PX_EXPECT_CLEAN_FAILURE(folder,
+                            QStringList({"export", "--height", "h.png", "--format", "unity",
+                                         "--out", "earlier", "--force"}),
+                            {"PX_TEST_FAIL_WRITE_AT=100"}, 1, "earlier", "No space left on device");
 }
 
-QTEST_GUILESS_MAIN(FaultDiskTest)
+PX_FAULTS_MAIN(FaultDiskTest)
 #include "FaultDiskTest.moc"

@@ -29,13 +29,26 @@ private slots:
 
 private:
     QString m_dir;
+    QMap<QString, QByteArray> m_sources; // by extension: the images the cases patch
     QTemporaryDir m_temp;
 };
 
 void FaultInputsTest::initTestCase() {
     QVERIFY(m_temp.isValid());
     m_dir = m_temp.path();
-    QCOMPARE(runCli(m_dir, {"sample", "noise", "--size", "32", "--out", "h.png"}).status, 0);
+    QVERIFY(writeSample(m_dir + "/h.png", "noise", 32));
+    // The smallest real image of each format the commands read (as `sample` writes them: 16-bit
+    // PNG and TIFF, float EXR, 8-bit JPEG) and a whole PNG to damage; made once, patched per case.
+    for (const auto& [ext, bits] :
+         {std::pair{"png", 16}, {"tif", 16}, {"exr", 32}, {"jpg", 8}, {"whole.png", 16}}) {
+        const QString path = m_dir + "/src." + ext;
+        QVERIFY(writeSample(path, "noise", QString(ext) == "whole.png" ? 64 : 8, 1, bits));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        m_sources.insert(ext, file.readAll());
+        file.close();
+        QVERIFY(file.remove());
+    }
     QVERIFY(QFile::link(m_dir + "/h.png", m_dir + "/symlink.png"));
     QVERIFY(::link(QString(m_dir + "/h.png").toLocal8Bit(),
                    QString(m_dir + "/hard.png").toLocal8Bit()) == 0);
@@ -229,18 +242,7 @@ void FaultInputsTest::oversizedHeader() {
     QFETCH(QString, reason);
     const QString ext = QFileInfo(file).suffix();
     const quint32 side = QFileInfo(file).baseName().mid(5).toUInt();
-    // The smallest real image of that format the CLI writes: 16-bit PNG and TIFF, float EXR,
-    // 8-bit JPEG.
-    const QString bits = ext == "exr" ? "32" : ext == "jpg" ? "8" : "16";
-    QCOMPARE(
-        runCli(m_dir, {"sample", "noise", "--size", "8", "--bits", bits, "--out", "src." + ext})
-            .status,
-        0);
-    QFile src(m_dir + "/src." + ext);
-    QVERIFY(src.open(QIODevice::ReadOnly));
-    QByteArray bytes = src.readAll();
-    src.close();
-    QFile::remove(src.fileName());
+    QByteArray bytes = m_sources.value(ext);
     QVERIFY2(claimSide(bytes, ext, side), qPrintable(file));
     QFile out(m_dir + "/" + file);
     QVERIFY(out.open(QIODevice::WriteOnly));
@@ -269,12 +271,7 @@ void FaultInputsTest::damagedPng_data() {
 void FaultInputsTest::damagedPng() {
     QFETCH(int, keep);
     QFETCH(QString, reason);
-    QCOMPARE(runCli(m_dir, {"sample", "noise", "--size", "64", "--out", "whole.png"}).status, 0);
-    QFile whole(m_dir + "/whole.png");
-    QVERIFY(whole.open(QIODevice::ReadOnly));
-    QByteArray bytes = whole.readAll();
-    whole.close();
-    QFile::remove(m_dir + "/whole.png");
+    QByteArray bytes = m_sources.value("whole.png");
     if (keep >= 0)
         bytes.truncate(keep);
     else if (keep == -2)
@@ -291,12 +288,12 @@ void FaultInputsTest::damagedPng() {
     QVERIFY(out.open(QIODevice::WriteOnly));
     out.write(bytes);
     out.close();
-    PX_EXPECT_CLEAN_FAILURE(m_dir,
-                            QStringList({"trace", "--height", "damaged.png", "--out", "t.csv"}), {},
-                            1, "damaged.png", reason);
-    const CliRun run = runCli(m_dir, {"trace", "--height", "damaged.png", "--out", "t.csv"});
-    QVERIFY2(!run.output.contains("libpng"), qPrintable(run.output));
-    QCOMPARE(run.output.count("error:"), 1);
+    QString said;
+    PX_EXPECT_CLEAN_FAILURE_SAYING(
+        m_dir, QStringList({"trace", "--height", "damaged.png", "--out", "t.csv"}), {}, 1,
+        "damaged.png", reason, said);
+    QVERIFY2(!said.contains("libpng"), qPrintable(said));
+    QCOMPARE(said.count("error:"), 1);
     QFile::remove(m_dir + "/damaged.png");
 }
 

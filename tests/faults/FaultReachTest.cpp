@@ -109,12 +109,12 @@ void FaultReachTest::initTestCase() {
     QDir().mkpath(m_dir + "/sub");
     QDir().mkpath(m_dir + "/meshes/inner");
     auto cli = [&](const QStringList& args) { QCOMPARE(runCli(m_dir, args).status, 0); };
-    cli({"sample", "noise", "--size", "32", "--out", "h.png"});
-    cli({"sample", "bricks", "--size", "32", "--bits", "8", "--out", "a.png"});
-    cli({"sample", "stones", "--size", "32", "--out", "c.png"});
-    cli({"sample", "rivets", "--size", "32", "--out", "other.png"});
-    cli({"sample", "noise", "--size", "32", "--seed", "3", "--out", "t-000.png"});
-    cli({"sample", "noise", "--size", "32", "--seed", "4", "--out", "t-001.png"});
+    QVERIFY(writeSample(m_dir + "/h.png", "noise", 32));
+    QVERIFY(writeSample(m_dir + "/a.png", "bricks", 32, 1, 8));
+    QVERIFY(writeSample(m_dir + "/c.png", "stones", 32));
+    QVERIFY(writeSample(m_dir + "/other.png", "rivets", 32));
+    QVERIFY(writeSample(m_dir + "/t-000.png", "noise", 32, 3));
+    QVERIFY(writeSample(m_dir + "/t-001.png", "noise", 32, 4));
     QVERIFY(::link(QString(m_dir + "/h.png").toLocal8Bit(),
                    QString(m_dir + "/hard.png").toLocal8Bit()) == 0);
     // A material naming a height, an albedo and a cone map (pom does not load the cone map).
@@ -263,17 +263,26 @@ void FaultReachTest::specialFileAsOutput_data() {
         {"stability", {"stability", "--case", "flat-0", "--rays", "4", "--csv", "OUT.png"}},
         {"import", {"import", "set", "--out", "OUT.png", "--force"}},
     };
+    // Every writer meets two of the four kinds, turn by turn, and every kind three or four writers
+    // (PX_FAULTS_ALL=1: all four each): the kinds are told apart in one function
+    // (checkReplaceable), and a writer that went round it would fail under any of them.
+    const QStringList kinds = {"fifo", "link", "dangling", "socket"};
+    int w = 0;
     for (const auto& [name, args] : writers) {
-        for (const char* kind : {"fifo", "link", "dangling", "socket"}) {
+        for (int k = 0; k < kinds.size(); ++k) {
+            if (!takesCase(w, k, static_cast<int>(kinds.size()), 2))
+                continue;
+            const QString& kind = kinds[k];
             QStringList a = args;
             a.replaceInStrings("OUT", QString("special-") + kind);
-            const QString reason = QString(kind) == "fifo"     ? fifo
-                                   : QString(kind) == "socket" ? socket
-                                   : QString(kind) == "link"   ? linkedFifo
-                                                               : link;
+            const QString reason = kind == "fifo"     ? fifo
+                                   : kind == "socket" ? socket
+                                   : kind == "link"   ? linkedFifo
+                                                      : link;
             QTest::newRow(qPrintable(name + " into a " + kind))
-                << QString(kind) << a << QString("special-") + kind + ".png" << reason;
+                << kind << a << "special-" + kind + ".png" << reason;
         }
+        ++w;
     }
     QTest::newRow("turntable frame 1 a FIFO")
         << "frames" << QStringList{"render", "--height", "h.png", "--turntable", "2",
@@ -623,11 +632,19 @@ void FaultReachTest::exportNeverRemovesAnInput() {
     QFETCH(QStringList, args);
     QFETCH(QString, reason);
     QDir(m_dir + "/pkg").removeRecursively();
-    const CliRun earlier = runCli(m_dir, first);
-    QVERIFY2(earlier.status == 0, qPrintable(earlier.output));
+    // The earlier export, made once for each way of making it and copied for the other cases.
+    const QString earlierCopy =
+        m_temp.path() + "/earlier-" + QString::number(qHash(first.join('\n')));
+    if (QDir(earlierCopy).exists()) {
+        QVERIFY(copyFolder(earlierCopy, m_dir + "/pkg"));
+    } else {
+        const CliRun earlier = runCli(m_dir, first);
+        QVERIFY2(earlier.status == 0, qPrintable(earlier.output));
+        QVERIFY(copyFolder(m_dir + "/pkg", earlierCopy));
+    }
     PX_EXPECT_CLEAN_FAILURE(m_dir, args, {}, 1, "pkg", reason);
     QDir(m_dir + "/pkg").removeRecursively();
 }
 
-QTEST_GUILESS_MAIN(FaultReachTest)
+PX_FAULTS_MAIN(FaultReachTest)
 #include "FaultReachTest.moc"

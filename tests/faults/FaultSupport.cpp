@@ -1,15 +1,21 @@
 #include "FaultSupport.h"
 
+#include "TestSupport.h"
+#include "parallax/image/ImageFile.h"
+#include "parallax/sample/ProceduralMaps.h"
+
 #include <QDir>
 #include <QDirIterator>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QMetaMethod>
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QTest>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <sys/mount.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -52,6 +58,40 @@ void writeFile(const QString& path, const QByteArray& bytes) {
     QFile file(path);
     QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
     QCOMPARE(file.write(bytes), bytes.size());
+}
+
+bool writeSample(const QString& path, const QString& name, int size, unsigned seed, int bits) {
+    const std::optional<ProceduralMap> kind = parseProceduralMap(name.toStdString());
+    const Result<PixelFormat> format = pixelFormatFromBits(bits);
+    if (!kind || !format) {
+        qWarning("no sample %s at %d bits", qPrintable(name), bits);
+        return false;
+    }
+    ImageWriteOptions options;
+    options.format = *format;
+    const Status written = writeImage(
+        path.toStdString(), makeProceduralMap(*kind, size, size, seed).toImage(), options);
+    if (!written)
+        qWarning("%s", written.error().message.c_str());
+    return static_cast<bool>(written);
+}
+
+bool takesCase(int a, int b, int count, int per) {
+    static const bool all = qEnvironmentVariableIntValue("PX_FAULTS_ALL") == 1;
+    return all || ((b - a) % count + count) % count < per;
+}
+
+bool copyFolder(const QString& from, const QString& to) {
+    std::error_code ec;
+    std::filesystem::remove_all(to.toStdString(), ec);
+    if (!ec)
+        std::filesystem::copy(from.toStdString(), to.toStdString(),
+                              std::filesystem::copy_options::recursive |
+                                  std::filesystem::copy_options::copy_symlinks,
+                              ec);
+    if (ec)
+        qWarning("copying %s to %s: %s", qPrintable(from), qPrintable(to), ec.message().c_str());
+    return !ec;
 }
 
 QMap<QString, QByteArray> snapshot(const QString& folder) {
@@ -147,6 +187,35 @@ bool remountReadOnly(const QString& folder) {
 
 void unmount(const QString& folder) {
     ::umount2(folder.toLocal8Bit().constData(), MNT_DETACH);
+}
+
+int execShard(QObject* test, int argc, char** argv) {
+    QStringList arguments;
+    for (int i = 0; i < argc; ++i)
+        arguments << QString::fromLocal8Bit(argv[i]);
+    const px::test::TestShard shard = px::test::testShard();
+    if (shard.count > 1) {
+        const QMetaObject* meta = test->metaObject();
+        const QStringList fixtures = {"initTestCase", "cleanupTestCase", "init", "cleanup"};
+        std::size_t function = 0;
+        int taken = 0;
+        for (int m = meta->methodOffset(); m < meta->methodCount(); ++m) {
+            const QMetaMethod method = meta->method(m);
+            const QString name = QString::fromLatin1(method.name());
+            if (method.methodType() != QMetaMethod::Slot ||
+                method.access() != QMetaMethod::Private || fixtures.contains(name) ||
+                name.endsWith("_data"))
+                continue;
+            if (shard.takes(function++)) {
+                arguments << name;
+                ++taken;
+            }
+        }
+        if (taken == 0) // no names would run them all
+            qFatal("shard %zu/%zu takes none of the %zu test functions", shard.index, shard.count,
+                   function);
+    }
+    return QTest::qExec(test, arguments);
 }
 
 } // namespace px::faults

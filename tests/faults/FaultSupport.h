@@ -4,6 +4,7 @@
 
 #include <QByteArray>
 #include <QMap>
+#include <QObject>
 #include <QString>
 #include <QStringList>
 
@@ -23,6 +24,23 @@ CliRun runCli(const QString& folder, const QStringList& arguments,
 
 // Writes `bytes` to `path` (a test's input file), replacing it.
 void writeFile(const QString& path, const QByteArray& bytes);
+
+// Writes the procedural map `name` to `path` byte for byte as `parallax-cli sample NAME --size SIZE
+// --seed SEED --bits BITS --out PATH` does (the same core calls, without a process): an input
+// that a case needs but does not test. False, with a warning, on failure.
+bool writeSample(const QString& path, const QString& name, int size, unsigned seed = 1,
+                 int bits = 16);
+
+// Whether case (a, b) of a product A x B runs, where B's values (a signal, a byte, a kind of
+// special file) are told apart in one function whatever A is (which command reaches it): each a
+// takes `per` of B's `count` values, turn by turn from its own index, so every value of A and of B
+// is still tried, several times over. PX_FAULTS_ALL=1 runs the whole product.
+bool takesCase(int a, int b, int count, int per);
+
+// Replaces `to` with a copy of the folder `from` (files and folders; every file a new inode):
+// a case's starting folder copied from a template made once, instead of running the CLI again
+// for every case (each run costs half a second of start-up). False, with a warning, on failure.
+bool copyFolder(const QString& from, const QString& to);
 
 // Every file and folder under `folder` (hidden ones included), with the bytes of each file (a
 // symbolic link: its target; a FIFO, socket or device: its kind).
@@ -51,15 +69,36 @@ bool mountTmpfs(const QString& folder, int kilobytes, QString& why);
 bool remountReadOnly(const QString& folder);
 void unmount(const QString& folder);
 
+// Runs the test object's functions as QTest::qExec does; under PX_TEST_SHARD=i/n (ctest's shards,
+// px_shard_test) only every n-th of its test functions from the i-th, whole with their rows.
+int execShard(QObject* test, int argc, char** argv);
+
 } // namespace px::faults
+
+// QTEST_GUILESS_MAIN, with the test's functions split between ctest's shards (execShard).
+#define PX_FAULTS_MAIN(TestObject)                                                                 \
+    int main(int argc, char** argv) {                                                              \
+        QCoreApplication app(argc, argv);                                                          \
+        TestObject test;                                                                           \
+        QTEST_SET_MAIN_SOURCE_PATH                                                                 \
+        return px::faults::execShard(&test, argc, argv);                                           \
+    }
 
 // Runs a case that must fail cleanly: status `rc`, the message naming `file` and matching
 // `reason`, the folder byte-identical afterwards and nothing left behind.
 #define PX_EXPECT_CLEAN_FAILURE(folder, args, env, rc, file, reason)                               \
     do {                                                                                           \
+        QString said_;                                                                             \
+        PX_EXPECT_CLEAN_FAILURE_SAYING(folder, args, env, rc, file, reason, said_);                \
+    } while (false)
+
+// The same, keeping what the run printed in `said` (a QString) for further checks.
+#define PX_EXPECT_CLEAN_FAILURE_SAYING(folder, args, env, rc, file, reason, said)                  \
+    do {                                                                                           \
         const auto before_ = px::faults::snapshot(folder);                                         \
         const px::faults::CliRun run_ = px::faults::runCli(folder, args, env);                     \
         const auto after_ = px::faults::snapshot(folder);                                          \
+        (said) = run_.output;                                                                      \
         const bool named_ = run_.output.contains("error: ") && run_.output.contains(file) &&       \
                             !run_.output.contains(                                                 \
                                 QRegularExpression("\\.tmp[0-9]+-|(export|set)-(tmp|old)[0-9]"));  \

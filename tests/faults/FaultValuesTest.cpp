@@ -34,7 +34,7 @@ private:
 void FaultValuesTest::initTestCase() {
     QVERIFY(m_temp.isValid());
     m_dir = m_temp.path();
-    QCOMPARE(runCli(m_dir, {"sample", "noise", "--size", "32", "--out", "h.png"}).status, 0);
+    QVERIFY(writeSample(m_dir + "/h.png", "noise", 32));
     // Float EXRs, an albedo 8 x 8 and an environment 16 x 8, at 0.5 but for texel (3, 2) at 3e38.
     for (const auto& [name, width] : {std::pair{"huge.exr", 8}, {"huge-env.exr", 16}}) {
         px::Image image(width, 8, 3);
