@@ -5,6 +5,7 @@
 #include "ShaderFiles.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdio>
 #include <regex>
@@ -89,9 +90,41 @@ struct StageOptions {
 
 // The production colour output writes no fetch count: its counting statements go (which leaves
 // pxFetches unreachable, so it is not declared either). Newlines stay, so #line still holds.
+// Removes what the pattern [ \t]*pxFetches\s*\+=\s*[^;\n]*;[ \t]* matches, scanned by hand:
+// std::regex over every library file of every variant was most of the generator's time.
 void removeFetchCounter(std::string& text) {
-    static const std::regex counting(R"([ \t]*pxFetches\s*\+=\s*[^;\n]*;[ \t]*)");
-    text = std::regex_replace(text, counting, "");
+    constexpr std::string_view kCounter = "pxFetches";
+    auto isBlank = [](char c) { return c == ' ' || c == '\t'; };
+    auto skipSpace = [&](std::size_t i) {
+        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
+            ++i;
+        return i;
+    };
+    std::string out;
+    std::size_t copied = 0; // text[0, copied) is decided: in `out`, or removed
+    bool removed = false;
+    for (std::size_t at = text.find(kCounter); at != std::string::npos;
+         at = text.find(kCounter, at + 1)) {
+        std::size_t end = skipSpace(at + kCounter.size());
+        if (text.compare(end, 2, "+=") != 0)
+            continue;
+        end = text.find_first_of(";\n", skipSpace(end + 2));
+        if (end == std::string::npos || text[end] != ';')
+            continue;
+        std::size_t begin = at;
+        while (begin > copied && isBlank(text[begin - 1]))
+            --begin;
+        for (++end; end < text.size() && isBlank(text[end]);)
+            ++end;
+        out.append(text, copied, begin - copied);
+        copied = end;
+        removed = true;
+        at = end - 1;
+    }
+    if (!removed)
+        return;
+    out.append(text, copied, std::string::npos);
+    text = std::move(out);
 }
 
 // `inputs` receives the names of the stage inputs (`in` globals) the kept code reads.
