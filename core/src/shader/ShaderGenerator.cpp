@@ -8,8 +8,11 @@
 #include <cctype>
 #include <charconv>
 #include <cstdio>
+#include <memory>
+#include <mutex>
 #include <regex>
 #include <set>
+#include <unordered_map>
 
 namespace px {
 
@@ -127,6 +130,29 @@ void removeFetchCounter(std::string& text) {
     text = std::move(out);
 }
 
+// A file's items, split once per process for each text it preprocesses to. Splitting was most
+// of a variant's generation, and across the thousands of variants each library file
+// preprocesses to only a few distinct texts. Errors are not kept: the caller reports them.
+using ItemList = std::shared_ptr<const std::vector<shader::GlslItem>>;
+Result<ItemList> splitOnce(const std::string& text, int file, const std::string& path) {
+    static std::mutex mutex;
+    static std::unordered_map<std::string, ItemList> split;
+    std::string key = std::to_string(file) + " " + path + "\n" + text;
+    {
+        const std::lock_guard lock(mutex);
+        if (auto it = split.find(key); it != split.end())
+            return it->second;
+    }
+    Result<std::vector<shader::GlslItem>> items = shader::splitItems(text, file, path);
+    if (!items)
+        return items.error();
+    const ItemList list = std::make_shared<const std::vector<shader::GlslItem>>(std::move(*items));
+    const std::lock_guard lock(mutex);
+    if (split.size() >= 4096)
+        split.clear(); // bounded (all variants need ~1600): lists in use stay alive by their owners
+    return split.emplace(std::move(key), list).first->second;
+}
+
 // `inputs` receives the names of the stage inputs (`in` globals) the kept code reads.
 Result<GeneratedShader> generateStage(const StageOptions& options,
                                       const std::vector<std::string>& defines,
@@ -137,7 +163,8 @@ Result<GeneratedShader> generateStage(const StageOptions& options,
     s.sources.push_back("(generated header)");
     std::set<std::string> defineSet(defines.begin(), defines.end());
     defineSet.insert("PX_PRECISE"); // emitted as `precise` below
-    std::vector<shader::GlslItem> items;
+    std::vector<ItemList> lists; // keeps the cached lists alive while `items` points into them
+    std::vector<const shader::GlslItem*> items;
     for (std::size_t k = 0; k < files.size(); ++k) {
         const std::string path = "shaders/" + files[k];
         const std::optional<std::string_view> text = shader::embeddedFile(files[k]);
@@ -148,11 +175,12 @@ Result<GeneratedShader> generateStage(const StageOptions& options,
             return pre.error();
         if (!options.countFetches)
             removeFetchCounter(*pre);
-        Result<std::vector<shader::GlslItem>> split =
-            shader::splitItems(*pre, static_cast<int>(k + 1), path);
+        Result<ItemList> split = splitOnce(*pre, static_cast<int>(k + 1), path);
         if (!split)
             return split.error();
-        std::move(split->begin(), split->end(), std::back_inserter(items));
+        for (const shader::GlslItem& item : **split)
+            items.push_back(&item);
+        lists.push_back(std::move(*split));
         s.sources.push_back(path);
     }
     std::set<std::string> external;
