@@ -8,6 +8,7 @@
 #include <cctype>
 #include <charconv>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <regex>
@@ -132,25 +133,29 @@ void removeFetchCounter(std::string& text) {
 
 // A file's items, split once per process for each text it preprocesses to. Splitting was most
 // of a variant's generation, and across the thousands of variants each library file
-// preprocesses to only a few distinct texts. Errors are not kept: the caller reports them.
+// preprocesses to a few dozen distinct texts. Errors are not kept: the caller reports them.
 using ItemList = std::shared_ptr<const std::vector<shader::GlslItem>>;
 Result<ItemList> splitOnce(const std::string& text, int file, const std::string& path) {
     static std::mutex mutex;
-    static std::unordered_map<std::string, ItemList> split;
-    std::string key = std::to_string(file) + " " + path + "\n" + text;
+    // By file, then by text (looked up without copying it).
+    static std::map<std::pair<int, std::string>, std::unordered_map<std::string, ItemList>> split;
+    static std::size_t count = 0;
     {
         const std::lock_guard lock(mutex);
-        if (auto it = split.find(key); it != split.end())
+        const std::unordered_map<std::string, ItemList>& texts = split[{file, path}];
+        if (auto it = texts.find(text); it != texts.end())
             return it->second;
     }
     Result<std::vector<shader::GlslItem>> items = shader::splitItems(text, file, path);
     if (!items)
         return items.error();
-    const ItemList list = std::make_shared<const std::vector<shader::GlslItem>>(std::move(*items));
+    ItemList list = std::make_shared<const std::vector<shader::GlslItem>>(std::move(*items));
     const std::lock_guard lock(mutex);
-    if (split.size() >= 4096)
-        split.clear(); // bounded (all variants need ~1600): lists in use stay alive by their owners
-    return split.emplace(std::move(key), list).first->second;
+    if (++count > 4096) { // bounded (all variants need ~1600); lists in use live on in `lists`
+        split.clear();
+        count = 1;
+    }
+    return split[{file, path}].emplace(text, std::move(list)).first->second;
 }
 
 // `inputs` receives the names of the stage inputs (`in` globals) the kept code reads.
