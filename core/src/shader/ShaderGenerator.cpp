@@ -168,7 +168,7 @@ Result<GeneratedShader> generateStage(const StageOptions& options,
     s.sources.push_back("(generated header)");
     std::set<std::string> defineSet(defines.begin(), defines.end());
     defineSet.insert("PX_PRECISE"); // emitted as `precise` below
-    std::vector<ItemList> lists; // keeps the cached lists alive while `items` points into them
+    std::vector<ItemList> lists;    // keeps the cached lists alive while `items` points into them
     std::vector<const shader::GlslItem*> items;
     for (std::size_t k = 0; k < files.size(); ++k) {
         const std::string path = "shaders/" + files[k];
