@@ -453,9 +453,19 @@ Result<std::vector<GlslItem>> splitItems(std::string_view text, int file, const 
 std::vector<const GlslItem*> reachableItems(const std::vector<GlslItem>& items,
                                             const std::vector<std::string>& roots,
                                             std::set<std::string>& external) {
+    std::vector<const GlslItem*> pointers;
+    pointers.reserve(items.size());
+    for (const GlslItem& item : items)
+        pointers.push_back(&item);
+    return reachableItems(pointers, roots, external);
+}
+
+std::vector<const GlslItem*> reachableItems(const std::vector<const GlslItem*>& items,
+                                            const std::vector<std::string>& roots,
+                                            std::set<std::string>& external) {
     std::multimap<std::string, std::size_t> byName;
     for (std::size_t k = 0; k < items.size(); ++k) {
-        for (const std::string& name : items[k].names)
+        for (const std::string& name : items[k]->names)
             byName.emplace(name, k);
     }
     std::vector<bool> kept(items.size(), false);
@@ -471,7 +481,7 @@ std::vector<const GlslItem*> reachableItems(const std::vector<GlslItem>& items,
         }
         for (auto it = first; it != last; ++it) {
             kept[it->second] = true;
-            for (const std::string& ref : items[it->second].references) {
+            for (const std::string& ref : items[it->second]->references) {
                 if (seen.insert(ref).second)
                     queue.push_back(ref);
             }
@@ -480,7 +490,7 @@ std::vector<const GlslItem*> reachableItems(const std::vector<GlslItem>& items,
     std::vector<const GlslItem*> result;
     for (std::size_t k = 0; k < items.size(); ++k) {
         if (kept[k])
-            result.push_back(&items[k]);
+            result.push_back(items[k]);
     }
     return result;
 }

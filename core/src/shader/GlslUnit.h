@@ -38,5 +38,9 @@ Result<std::vector<GlslItem>> splitItems(std::string_view text, int file, const 
 std::vector<const GlslItem*> reachableItems(const std::vector<GlslItem>& items,
                                             const std::vector<std::string>& roots,
                                             std::set<std::string>& external);
+// The same over items held elsewhere (the generator's per-file cache).
+std::vector<const GlslItem*> reachableItems(const std::vector<const GlslItem*>& items,
+                                            const std::vector<std::string>& roots,
+                                            std::set<std::string>& external);
 
 } // namespace px::shader

@@ -5,10 +5,15 @@
 #include "ShaderFiles.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdio>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <regex>
 #include <set>
+#include <unordered_map>
 
 namespace px {
 
@@ -89,9 +94,68 @@ struct StageOptions {
 
 // The production colour output writes no fetch count: its counting statements go (which leaves
 // pxFetches unreachable, so it is not declared either). Newlines stay, so #line still holds.
+// Removes what the pattern [ \t]*pxFetches\s*\+=\s*[^;\n]*;[ \t]* matches, scanned by hand:
+// std::regex over every library file of every variant was most of the generator's time.
 void removeFetchCounter(std::string& text) {
-    static const std::regex counting(R"([ \t]*pxFetches\s*\+=\s*[^;\n]*;[ \t]*)");
-    text = std::regex_replace(text, counting, "");
+    constexpr std::string_view kCounter = "pxFetches";
+    auto isBlank = [](char c) { return c == ' ' || c == '\t'; };
+    auto skipSpace = [&](std::size_t i) {
+        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
+            ++i;
+        return i;
+    };
+    std::string out;
+    std::size_t copied = 0; // text[0, copied) is decided: in `out`, or removed
+    bool removed = false;
+    for (std::size_t at = text.find(kCounter); at != std::string::npos;
+         at = text.find(kCounter, at + 1)) {
+        std::size_t end = skipSpace(at + kCounter.size());
+        if (text.compare(end, 2, "+=") != 0)
+            continue;
+        end = text.find_first_of(";\n", skipSpace(end + 2));
+        if (end == std::string::npos || text[end] != ';')
+            continue;
+        std::size_t begin = at;
+        while (begin > copied && isBlank(text[begin - 1]))
+            --begin;
+        for (++end; end < text.size() && isBlank(text[end]);)
+            ++end;
+        out.append(text, copied, begin - copied);
+        copied = end;
+        removed = true;
+        at = end - 1;
+    }
+    if (!removed)
+        return;
+    out.append(text, copied, std::string::npos);
+    text = std::move(out);
+}
+
+// A file's items, split once per process for each text it preprocesses to. Splitting was most
+// of a variant's generation, and across the thousands of variants each library file
+// preprocesses to a few dozen distinct texts. Errors are not kept: the caller reports them.
+using ItemList = std::shared_ptr<const std::vector<shader::GlslItem>>;
+Result<ItemList> splitOnce(const std::string& text, int file, const std::string& path) {
+    static std::mutex mutex;
+    // By file, then by text (looked up without copying it).
+    static std::map<std::pair<int, std::string>, std::unordered_map<std::string, ItemList>> split;
+    static std::size_t count = 0;
+    {
+        const std::lock_guard lock(mutex);
+        const std::unordered_map<std::string, ItemList>& texts = split[{file, path}];
+        if (auto it = texts.find(text); it != texts.end())
+            return it->second;
+    }
+    Result<std::vector<shader::GlslItem>> items = shader::splitItems(text, file, path);
+    if (!items)
+        return items.error();
+    ItemList list = std::make_shared<const std::vector<shader::GlslItem>>(std::move(*items));
+    const std::lock_guard lock(mutex);
+    if (++count > 4096) { // bounded (all variants need ~1600); lists in use live on in `lists`
+        split.clear();
+        count = 1;
+    }
+    return split[{file, path}].emplace(text, std::move(list)).first->second;
 }
 
 // `inputs` receives the names of the stage inputs (`in` globals) the kept code reads.
@@ -104,7 +168,8 @@ Result<GeneratedShader> generateStage(const StageOptions& options,
     s.sources.push_back("(generated header)");
     std::set<std::string> defineSet(defines.begin(), defines.end());
     defineSet.insert("PX_PRECISE"); // emitted as `precise` below
-    std::vector<shader::GlslItem> items;
+    std::vector<ItemList> lists;    // keeps the cached lists alive while `items` points into them
+    std::vector<const shader::GlslItem*> items;
     for (std::size_t k = 0; k < files.size(); ++k) {
         const std::string path = "shaders/" + files[k];
         const std::optional<std::string_view> text = shader::embeddedFile(files[k]);
@@ -115,11 +180,12 @@ Result<GeneratedShader> generateStage(const StageOptions& options,
             return pre.error();
         if (!options.countFetches)
             removeFetchCounter(*pre);
-        Result<std::vector<shader::GlslItem>> split =
-            shader::splitItems(*pre, static_cast<int>(k + 1), path);
+        Result<ItemList> split = splitOnce(*pre, static_cast<int>(k + 1), path);
         if (!split)
             return split.error();
-        std::move(split->begin(), split->end(), std::back_inserter(items));
+        for (const shader::GlslItem& item : **split)
+            items.push_back(&item);
+        lists.push_back(std::move(*split));
         s.sources.push_back(path);
     }
     std::set<std::string> external;

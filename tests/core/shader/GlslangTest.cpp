@@ -9,6 +9,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <fstream>
+#include <map>
 #include <set>
 
 using namespace px;
@@ -28,16 +29,51 @@ struct Validation {
     int validated = 0; // files it reports having checked
 };
 
+using SourceMap = std::map<QString, std::vector<std::string>>; // file -> its #line sources
+
+// Given several files the validator names each before its messages: only the blocks of the
+// files with errors are kept (a failure deep in a batch is not cut off behind the names of the
+// files that passed), their positions as "shaders/FILE:LINE".
+QString failingBlocks(const QString& out, const QStringList& files, const SourceMap& sources) {
+    QString blocks, current;
+    const std::vector<std::string>* fileSources = nullptr;
+    bool failed = false;
+    auto flush = [&] {
+        blocks += failed ? current : QString();
+        current.clear();
+        failed = false;
+    };
+    for (const QString& line : out.split('\n')) {
+        if (files.contains(line.trimmed())) {
+            flush();
+            current = line.trimmed() + '\n';
+            const auto it = sources.find(line.trimmed());
+            fileSources = it == sources.end() ? nullptr : &it->second;
+            continue;
+        }
+        if (line.trimmed().isEmpty())
+            continue;
+        current +=
+            (fileSources ? QString::fromStdString(mapCompilerLog(line.toStdString(), *fileSources))
+                         : line) +
+            '\n';
+        failed = failed || line.startsWith("ERROR");
+    }
+    flush();
+    return blocks.isEmpty() ? out : blocks;
+}
+
 // Runs the validator on a batch of files. Given several files it names each one it checked on
 // stdout; those lines are counted, independently of how many files the test wrote.
-Validation validate(const QStringList& files) {
+Validation validate(const QStringList& files, const SourceMap& sources = {}) {
     QProcess p;
     p.start(PX_GLSLANG, files);
     if (!p.waitForFinished(120000) || p.exitStatus() != QProcess::NormalExit)
         return {QString("could not run %1: %2").arg(PX_GLSLANG, p.errorString()), 0};
     const QString out = QString::fromUtf8(p.readAllStandardOutput());
     if (p.exitCode() != 0)
-        return {out + QString::fromUtf8(p.readAllStandardError()), 0};
+        return {failingBlocks(out, files, sources) + QString::fromUtf8(p.readAllStandardError()),
+                0};
     if (files.size() == 1)
         return {{}, 1}; // a single file is not named: its exit status says it was checked
     int validated = 0;
@@ -52,11 +88,13 @@ void GlslangTest::everyVariantValidates() {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     QStringList batch;
+    SourceMap sources;
     int written = 0, validated = 0;
     auto flush = [&]() -> QString {
-        const Validation v = batch.isEmpty() ? Validation{} : validate(batch);
+        const Validation v = batch.isEmpty() ? Validation{} : validate(batch, sources);
         validated += v.validated;
         batch.clear();
+        sources.clear();
         return v.failure;
     };
     // ctest runs the shards in parallel (TestSupport.h).
@@ -71,6 +109,7 @@ void GlslangTest::everyVariantValidates() {
             const QString path = dir.filePath(QString::fromStdString(name));
             std::ofstream(path.toStdString()) << shader.text;
             batch << path;
+            sources[path] = shader.sources;
             ++written;
         };
         add(k.name() + ".frag", p->fragment);

@@ -23,6 +23,10 @@ std::string code(const std::string& text) {
     std::string out;
     out.reserve(text.size());
     for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] != '/') {
+            out += text[i];
+            continue;
+        }
         if (text.compare(i, 2, "//") == 0) {
             while (i < text.size() && text[i] != '\n')
                 ++i;
