@@ -34,17 +34,18 @@ float pxTraceRelaxedCone(vec2 uv0, vec2 P) {
         float z = 1.0f - t;
         // pxCellAt reads the rounded X0 + dX t: on a long ray the exact offset can put the ray a
         // thousandth of a cell into a neighbour (t a border t rounded short). There the patch is
-        // the neighbour's: the clamped edge of this cell would put a ray that passes just above a
-        // peak in the solid (thousands of texels short at 89.99 degrees).
+        // the neighbour's: the clamped edge of this cell put a ray that passes just above a peak
+        // in the solid (thousands of texels short at 89.99 degrees). Read only then, it costs no
+        // fetch on the other steps.
+        bool solid = z <= pxPatchHeight(k.h, clamp(a.x, 0.0f, 1.0f), clamp(a.y, 0.0f, 1.0f));
         ivec2 beside = ivec2(a.x > 1.0f ? 1 : (a.x < 0.0f ? -1 : 0),
                              a.y > 1.0f ? 1 : (a.y < 0.0f ? -1 : 0));
-        vec4 hHere = k.h;
-        vec2 aHere = a;
-        if (beside.x != 0 || beside.y != 0) {
-            hHere = pxCellCorners(cell + beside);
-            aHere = a - vec2(beside);
+        if (solid && (beside.x != 0 || beside.y != 0)) {
+            vec2 b = a - vec2(beside);
+            solid = z <= pxPatchHeight(pxCellCorners(cell + beside), clamp(b.x, 0.0f, 1.0f),
+                                       clamp(b.y, 0.0f, 1.0f));
         }
-        if (z <= pxPatchHeight(hHere, clamp(aHere.x, 0.0f, 1.0f), clamp(aHere.y, 0.0f, 1.0f))) {
+        if (solid) {
             // The last step ended in the solid, after one crossing.
             if (t <= tAbove)
                 return t;
