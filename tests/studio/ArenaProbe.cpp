@@ -11,13 +11,20 @@ namespace px::studio::test {
 std::map<int, int> threadNicesInLoop(BackgroundArena& arena) {
     std::mutex mutex;
     std::map<int, int> seen;
+    // Until a worker has joined the caller (a lowered worker on a busy machine may take a while
+    // to be scheduled), each iteration leaves room to steal; then the rest run through.
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::seconds(std::thread::hardware_concurrency() > 1 ? 30 : 0);
     arena.execute([&] {
-        tbb::parallel_for(0, 256, [&](int) {
+        tbb::parallel_for(0, 1 << 16, [&](int) {
+            bool joined = false;
             {
                 const std::lock_guard lock(mutex);
                 seen[static_cast<int>(gettid())] = thisThreadsNice();
+                joined = seen.size() >= 2;
             }
-            std::this_thread::sleep_for(std::chrono::microseconds(500)); // room to steal
+            if (!joined && std::chrono::steady_clock::now() < deadline)
+                std::this_thread::sleep_for(std::chrono::microseconds(500)); // room to steal
         });
     });
     return seen;

@@ -29,6 +29,7 @@ std::vector<int> globalPoolNices() {
     const int threads = pool->maxThreadCount();
     std::atomic<int> started{0};
     std::vector<QFuture<int>> jobs;
+    jobs.reserve(static_cast<std::size_t>(threads));
     for (int i = 0; i < threads; ++i)
         jobs.push_back(QtConcurrent::run(pool, [&started, threads] {
             ++started;
@@ -37,6 +38,7 @@ std::vector<int> globalPoolNices() {
             return thisThreadsNice();
         }));
     std::vector<int> nices;
+    nices.reserve(jobs.size());
     for (QFuture<int>& job : jobs)
         nices.push_back(job.result());
     return nices;

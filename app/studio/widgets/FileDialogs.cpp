@@ -63,8 +63,8 @@ void rememberChoice(FileKind kind, const QString& chosen) {
 
 QString askOpenFile(QWidget* parent, FileKind kind, const QString& title, const QString& filter,
                     const QString& fallback) {
-    const QString file = run(parent, title, startIn(kind, fallback), filter,
-                             QFileDialog::ExistingFile, QFileDialog::AcceptOpen);
+    QString file = run(parent, title, startIn(kind, fallback), filter, QFileDialog::ExistingFile,
+                       QFileDialog::AcceptOpen);
     rememberChoice(kind, file);
     return file;
 }
@@ -75,15 +75,14 @@ QString askSaveFile(QWidget* parent, FileKind kind, const QString& title, const 
     const QString start = QFileInfo(suggestion).isAbsolute() || folder.isEmpty()
                               ? suggestion
                               : QDir(folder).filePath(suggestion);
-    const QString file =
-        run(parent, title, start, filter, QFileDialog::AnyFile, QFileDialog::AcceptSave);
+    QString file = run(parent, title, start, filter, QFileDialog::AnyFile, QFileDialog::AcceptSave);
     rememberChoice(kind, file);
     return file;
 }
 
 QString askFolder(QWidget* parent, FileKind kind, const QString& title, const QString& fallback) {
-    const QString folder = run(parent, title, startIn(kind, fallback), {}, QFileDialog::Directory,
-                               QFileDialog::AcceptOpen);
+    QString folder = run(parent, title, startIn(kind, fallback), {}, QFileDialog::Directory,
+                         QFileDialog::AcceptOpen);
     rememberChoice(kind, folder);
     return folder;
 }

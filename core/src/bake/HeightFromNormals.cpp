@@ -88,6 +88,7 @@ void solvePoisson(std::vector<Complex>& f, int W, int H, bool periodic, BakeProg
     const AxisTransform tx(W, periodic), ty(H, periodic);
     auto rows = [&](bool back) {
         tbb::parallel_for(tbb::blocked_range<int>(0, H, 16), [&](const tbb::blocked_range<int>& r) {
+            // NOLINTNEXTLINE(performance-unnecessary-copy-initialization): the copy is the point
             const AxisTransform t = tx; // see AxisTransform: one per thread
             std::vector<Complex> scratch;
             for (int y = r.begin(); y < r.end(); ++y) {
@@ -99,6 +100,7 @@ void solvePoisson(std::vector<Complex>& f, int W, int H, bool periodic, BakeProg
     };
     auto columns = [&](bool back) {
         tbb::parallel_for(tbb::blocked_range<int>(0, W, 16), [&](const tbb::blocked_range<int>& r) {
+            // NOLINTNEXTLINE(performance-unnecessary-copy-initialization): the copy is the point
             const AxisTransform t = ty; // see AxisTransform: one per thread
             std::vector<Complex> scratch;
             for (int x = r.begin(); x < r.end(); ++x)

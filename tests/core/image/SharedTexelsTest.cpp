@@ -145,6 +145,7 @@ private slots:
             const PlaneWriter put = cones.writer();
             QVERIFY(!cones.sqrtRatio.sharesWith(before.sqrtRatio));
             std::vector<std::thread> threads;
+            threads.reserve(4);
             for (int k = 0; k < 4; ++k) {
                 threads.emplace_back([&put, k] {
                     for (int y = k; y < 64; y += 4)

@@ -191,6 +191,7 @@ void EnvironmentTest::anyWidthLightsAsItsTexelsSay() {
             Image map(width, width / 2, 3);
             std::uniform_int_distribution<int> cx(0, width - 1), cy(0, width / 2 - 1);
             std::vector<std::pair<int, int>> patches;
+            patches.reserve(6);
             for (int k = 0; k < 6; ++k)
                 patches.emplace_back(cx(rng), cy(rng));
             for (int y = 0; y < map.height; ++y) {
