@@ -98,5 +98,5 @@ float pxTraceCone(vec2 uv0, vec2 P) {
         if (t >= 1.0f)
             return 1.0f;
     }
-    return pxFinishExact(X0, dXY, tAbove); // the cap ran out above the surface
+    return pxFinishExact(X0, dXY, t); // the cap ran out above the surface
 }
