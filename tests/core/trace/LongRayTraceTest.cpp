@@ -80,7 +80,9 @@ double boundOf(Technique technique) {
 
 // Ray k of a view: the 4 x 4 grid of starting points over the tile.
 glm::dvec2 rayStart(int k) {
-    return {(k % 4 + 0.5) / 4.0, (k / 4 + 0.5) / 4.0};
+    const int column = k % 4;
+    const int row = k / 4;
+    return {(column + 0.5) / 4.0, (row + 0.5) / 4.0};
 }
 
 // How far, in texels, a traced t lies outside the float64 hits of the surface raised and lowered
