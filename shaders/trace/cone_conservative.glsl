@@ -48,7 +48,7 @@ float pxConeExitFrom(vec2 d, float h, float c, vec2 P, float z) {
 // surface. t + step rounds to a float's last bit of t, on a long grazing ray a thousandth of a cell
 // and more: the sum can land past that meeting, through the tip of a wall whose ridge the ray
 // clips (seed 71092, walls, 89.99 degrees: 39 texels late) or inside the solid. So a step lands
-// this far short of its rounded end, a few of t's ulps, still above the surface; a step whose
+// this far short of its rounded end (8 to 16 of t's ulps), still above the surface; a step whose
 // landing would not leave the cell solves the cell exactly instead, as a short step does.
 #define PX_CONE_LANDING (1.0f - 4.0f * PX_SPAN_SLACK)
 
