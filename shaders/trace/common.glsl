@@ -269,6 +269,28 @@ float pxSolveCell(ivec2 cell, vec2 X0, vec2 dXY, float ta, float tb) {
     return pxSolvePatch(pxCellCorners(cell), cell, X0, dXY, ta, tb);
 }
 
+// Bilinear height at offset (fx, fy) in a cell with corners h (h00, h10, h01, h11).
+float pxPatchHeight(vec4 h, float fx, float fy) {
+    return pxLerp(pxLerp(h.x, h.y, fx), pxLerp(h.z, h.w, fx), fy);
+}
+
+// Whether the ray at height z and offset a (pxCellOffset) in `cell`, corners h, is in the solid.
+// pxCellAt reads the rounded X0 + dX t: on a long ray the exact offset can put the ray a
+// thousandth of a cell into a neighbour (t a border t rounded short). There the patch is the
+// neighbour's: the clamped edge of this cell put a ray that passes just above a peak in the solid
+// (thousands of texels short at 89.99 degrees). Read only then, it costs no fetch otherwise.
+bool pxInSolid(vec4 h, ivec2 cell, vec2 a, float z) {
+    bool solid = z <= pxPatchHeight(h, clamp(a.x, 0.0f, 1.0f), clamp(a.y, 0.0f, 1.0f));
+    ivec2 beside = ivec2(a.x > 1.0f ? 1 : (a.x < 0.0f ? -1 : 0),
+                         a.y > 1.0f ? 1 : (a.y < 0.0f ? -1 : 0));
+    if (solid && (beside.x != 0 || beside.y != 0)) {
+        vec2 b = a - vec2(beside);
+        solid = z <= pxPatchHeight(pxCellCorners(cell + beside), clamp(b.x, 0.0f, 1.0f),
+                                   clamp(b.y, 0.0f, 1.0f));
+    }
+    return solid;
+}
+
 // The cell the ray occupies just after t: on a cell border, the one it is entering.
 int pxCellAlong(float X, float dX) {
     return dX >= 0.0f ? int(floor(X)) : int(ceil(X)) - 1;

@@ -13,11 +13,6 @@
 // would keep any crossing). A march whose cap runs out is finished by the cell walk from the last
 // point known above the surface.
 
-// Bilinear height at offset (fx, fy) in a cell with corners h (h00, h10, h01, h11).
-float pxPatchHeight(vec4 h, float fx, float fy) {
-    return pxLerp(pxLerp(h.x, h.y, fx), pxLerp(h.z, h.w, fx), fy);
-}
-
 float pxTraceRelaxedCone(vec2 uv0, vec2 P) {
     vec2 X0 = pxCellCoords(uv0);
     vec2 dXY = pxCellsPerT(P);
@@ -32,26 +27,8 @@ float pxTraceRelaxedCone(vec2 uv0, vec2 P) {
         vec2 a = vec2(pxCellOffset(cell.x, X0.x, dXY.x, pxCellsPerTLow.x, t),
                        pxCellOffset(cell.y, X0.y, dXY.y, pxCellsPerTLow.y, t));
         float z = 1.0f - t;
-        // pxCellAt reads the rounded X0 + dX t: on a long ray the exact offset can put the ray a
-        // thousandth of a cell into a neighbour (t a border t rounded short). There the patch is
-        // the neighbour's: the clamped edge of this cell put a ray that passes just above a peak
-        // in the solid (thousands of texels short at 89.99 degrees). Read only then, it costs no
-        // fetch on the other steps.
-        bool solid = z <= pxPatchHeight(k.h, clamp(a.x, 0.0f, 1.0f), clamp(a.y, 0.0f, 1.0f));
-        ivec2 beside = ivec2(a.x > 1.0f ? 1 : (a.x < 0.0f ? -1 : 0),
-                             a.y > 1.0f ? 1 : (a.y < 0.0f ? -1 : 0));
-        if (solid && (beside.x != 0 || beside.y != 0)) {
-            vec2 b = a - vec2(beside);
-            solid = z <= pxPatchHeight(pxCellCorners(cell + beside), clamp(b.x, 0.0f, 1.0f),
-                                       clamp(b.y, 0.0f, 1.0f));
-        }
-        if (solid) {
-            // The last step ended in the solid, after one crossing.
-            if (t <= tAbove)
-                return t;
-            vec2 r = pxWalkCells(X0, dXY, tAbove, t, PX_WALK_LIMIT);
-            return r.x >= 0.0f ? r.x : t; // no root: rounding at the point that found the solid
-        }
+        if (pxInSolid(k.h, cell, a, z))
+            return pxCrossingBefore(X0, dXY, tAbove, t); // the last step crossed once
         vec4 e = vec4(0.0f, 0.0f, 0.0f, 0.0f);
         for (int j = 0; j < 4; ++j) {
             ivec2 texel = ivec2(cell.x + (j & 1), cell.y + (j >> 1));
@@ -77,13 +54,8 @@ float pxTraceRelaxedCone(vec2 uv0, vec2 P) {
             tAbove = t;
             t = min(t + step, 1.0f);
         }
-        if (t >= 1.0f) {
-            // f(1) >= 0: the bottom is always solid; the first crossing lies after tAbove.
-            if (t <= tAbove)
-                return 1.0f;
-            vec2 r = pxWalkCells(X0, dXY, tAbove, 1.0f, PX_WALK_LIMIT);
-            return r.x >= 0.0f ? r.x : 1.0f;
-        }
+        if (t >= 1.0f) // the bottom is solid (f(1) >= 0): the first crossing lies after tAbove
+            return pxCrossingBefore(X0, dXY, tAbove, 1.0f);
     }
     return pxFinishExact(X0, dXY, tAbove); // the cap ran out: walk on from where it was above
 }

@@ -45,3 +45,12 @@ float pxFinishExact(vec2 X0, vec2 dXY, float t) {
         return r.x;
     return r.y >= 1.0f ? 1.0f : r.y;
 }
+
+// The first crossing of a ray known above the surface at tAbove and in the solid at t (a march
+// that found itself in the solid after a step): the cells between are walked exactly.
+float pxCrossingBefore(vec2 X0, vec2 dXY, float tAbove, float t) {
+    if (t <= tAbove)
+        return t;
+    vec2 r = pxWalkCells(X0, dXY, tAbove, t, PX_WALK_LIMIT);
+    return r.x >= 0.0f ? r.x : t; // no root: rounding at the point that found the solid
+}

@@ -7,6 +7,7 @@
 
 #include "RenderTestSupport.h"
 #include "parallax/bake/ConeMapBaker.h"
+#include "parallax/eval/HitErrorStats.h"
 #include "parallax/render/GpuTracer.h"
 #include "parallax/sample/ProceduralMaps.h"
 
@@ -22,6 +23,7 @@ private slots:
     void initTestCase() { QVERIFY(test::glContext()); }
     void gpuEqualsCpu_data();
     void gpuEqualsCpu();
+    void coneOnAFoundLongRay();
     void bakesWhatTheTechniqueReadsWhenNotGiven();
     void refusesWhatTheCpuRefuses();
 };
@@ -112,6 +114,45 @@ void GpuTraceTest::gpuEqualsCpu() {
         qPrintable(QString("fetch counts differ on %1 of %2 rays").arg(fetchesDiffer).arg(rays)));
     qInfo("%lld rays, fetch counts differ on %lld, largest hit difference %.3g texel", rays,
           fetchesDiffer, worst);
+}
+
+// The rays of the long-ray view on which core.trace.LongRayTrace found `cone` 39 texels late (seed
+// 71092: t + step rounded through a wall's ridge): on the GPU as on the CPU, and on the exact hit.
+void GpuTraceTest::coneOnAFoundLongRay() {
+    const HeightField field = makeProceduralMap(ProceduralMap::Walls, 32, 32, 71092);
+    TraceMaps maps;
+    maps.height = &field;
+    maps.wrap = WrapMode::Repeat;
+    const ConeMap cone = bakeConeMap(field, maps.wrap, ConeKind::Conservative);
+    maps.cone = &cone;
+    TraceScene scene;
+    scene.rays = 4; // LongRayTrace's 4 x 4 starting points
+    scene.polarDeg = 89.99;
+    scene.azimuthDeg = 35.0;
+    const float scale = 100.0f;
+    Result<Tracer> cpu =
+        Tracer::create(maps, Technique::Cone, info(Technique::Cone).defaults, scale);
+    Result<Tracer> exact =
+        Tracer::create(maps, Technique::Exact, info(Technique::Exact).defaults, scale);
+    QVERIFY(cpu.ok() && exact.ok());
+    const auto expected = traceScene(*cpu, scene);
+    const auto hits = traceScene(*exact, scene);
+    ShaderCache shaders;
+    auto gpu =
+        traceSceneGpu(shaders, maps, Technique::Cone, info(Technique::Cone).defaults, scale, scene);
+    QVERIFY2(gpu.ok(), gpu ? "" : gpu.error().message.c_str());
+    const bool bitExact = test::isLlvmpipe(test::glContext()->info().renderer);
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+        const QString where = QString("ray %1: exact t %2, CPU t %3, GPU t %4")
+                                  .arg(k)
+                                  .arg(hits[k].t, 0, 'g', 9)
+                                  .arg(expected[k].t, 0, 'g', 9)
+                                  .arg((*gpu)[k].t, 0, 'g', 9);
+        QVERIFY2(hitErrorTexels(expected[k], (*gpu)[k], 32, 32) <= 1e-3, qPrintable(where));
+        QVERIFY2(hitErrorTexels(hits[k], (*gpu)[k], 32, 32) <= kExactTexels, qPrintable(where));
+        if (bitExact)
+            QCOMPARE((*gpu)[k].fetches, expected[k].fetches);
+    }
 }
 
 // Without derived maps in TraceMaps the GPU tracer bakes them as the CPU Tracer does: same answers.
