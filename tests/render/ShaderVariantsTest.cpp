@@ -216,7 +216,7 @@ void ShaderVariantsTest::everyVariantBuildsWithExactlyTheUniformsItNeeds() {
                         failures.mid(0, 40).join("\n")));
     QCOMPARE(next, linked.size());
     QCOMPARE(built, expectedBuilt);
-    QVERIFY(built > 0 && generatedCount > built);
+    QVERIFY(built > 0 && (linkAll ? generatedCount == built : generatedCount > built));
     qInfo("%d variants generated, %d linked on the driver (%zu of %zu in all shards)",
           generatedCount, built, linked.size(), all.size());
 }
