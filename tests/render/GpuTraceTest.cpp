@@ -148,8 +148,10 @@ void GpuTraceTest::coneOnAFoundLongRay() {
                                   .arg(hits[k].t, 0, 'g', 9)
                                   .arg(expected[k].t, 0, 'g', 9)
                                   .arg((*gpu)[k].t, 0, 'g', 9);
-        QVERIFY2(hitErrorTexels(expected[k], (*gpu)[k], 32, 32) <= 1e-3, qPrintable(where));
-        QVERIFY2(hitErrorTexels(hits[k], (*gpu)[k], 32, 32) <= kExactTexels, qPrintable(where));
+        QVERIFY2(hitErrorTexels(expected[k], (*gpu)[k], field.width, field.height) <= 1e-3,
+                 qPrintable(where));
+        QVERIFY2(hitErrorTexels(hits[k], (*gpu)[k], field.width, field.height) <= kExactTexels,
+                 qPrintable(where));
         if (bitExact)
             QCOMPARE((*gpu)[k].fetches, expected[k].fetches);
     }
