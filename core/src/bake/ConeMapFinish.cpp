@@ -28,27 +28,26 @@ void applyNeighbourhoodMinimum(ConeMap& cones, WrapMode wrap) {
     });
     // ... then columns, in strips, keeping the unmodified previous row and (repeat) first row.
     constexpr int kStrip = 64;
-    tbb::parallel_for(tbb::blocked_range<int>(0, (W + kStrip - 1) / kStrip),
-                      [&](const tbb::blocked_range<int>& strips) {
-                          std::vector<float> previous(kStrip), current(kStrip), first(kStrip);
-                          for (int s = strips.begin(); s < strips.end(); ++s) {
-                              const int x0 = s * kStrip, n = std::min(kStrip, W - x0);
-                              std::copy_n(&g.at(x0, wrapIndex(-1, H, wrap)), n, previous.begin());
-                              std::copy_n(&g.at(x0, 0), n, first.begin());
-                              for (int y = 0; y < H; ++y) {
-                                  std::copy_n(&g.at(x0, y), n, current.begin());
-                                  const bool last = y + 1 == H;
-                                  const float* next =
-                                      !last ? &g.at(x0, y + 1)
-                                            : (wrap == WrapMode::Repeat ? first.data()
-                                                                        : current.data());
-                                  float* out = &g.at(x0, y);
-                                  for (int i = 0; i < n; ++i)
-                                      out[i] = std::min({previous[i], current[i], next[i]});
-                                  std::swap(previous, current);
-                              }
-                          }
-                      });
+    auto columns = [&](const tbb::blocked_range<int>& strips) {
+        std::vector<float> previous(kStrip), current(kStrip), first(kStrip);
+        for (int s = strips.begin(); s < strips.end(); ++s) {
+            const int x0 = s * kStrip, n = std::min(kStrip, W - x0);
+            std::copy_n(&g.at(x0, wrapIndex(-1, H, wrap)), n, previous.begin());
+            std::copy_n(&g.at(x0, 0), n, first.begin());
+            for (int y = 0; y < H; ++y) {
+                std::copy_n(&g.at(x0, y), n, current.begin());
+                const bool last = y + 1 == H;
+                const float* next =
+                    !last ? &g.at(x0, y + 1)
+                          : (wrap == WrapMode::Repeat ? first.data() : current.data());
+                float* out = &g.at(x0, y);
+                for (int i = 0; i < n; ++i)
+                    out[i] = std::min({previous[i], current[i], next[i]});
+                std::swap(previous, current);
+            }
+        }
+    };
+    tbb::parallel_for(tbb::blocked_range<int>(0, (W + kStrip - 1) / kStrip), columns);
 }
 
 void quantiseDown(ConeMap& cones, int levels) {
