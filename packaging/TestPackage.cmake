@@ -75,6 +75,17 @@ if(NOT EXISTS ${WORK_DIR}/cone.png)
 endif()
 run(${cli} export --height ${WORK_DIR}/bricks_height.png --format godot --out ${WORK_DIR}/godot)
 message("the installed parallax-cli ran: ${out}")
+# Every format but PNG goes through the OpenImageIO module, which the installed program loads from
+# the package (found from its own folder), not from the build tree: LD_DEBUG names the file.
+file(GLOB_RECURSE module ${usr}/lib/*/libparallax-oiio.so)
+if(NOT module)
+  message(FATAL_ERROR "the package lacks the image module (libparallax-oiio.so under /usr/lib)")
+endif()
+run(${CMAKE_COMMAND} -E env LD_DEBUG=files ${cli} sample noise --size 16 --bits 32 --out ${WORK_DIR}/noise.exr)
+string(REGEX MATCH "file=[^ \n]*libparallax-oiio\\.so" loaded "${out}")
+if(NOT loaded STREQUAL "file=${module}")
+  message(FATAL_ERROR "the installed parallax-cli loaded '${loaded}', not the package's ${module}")
+endif()
 # The man page is well-formed and names every command the program has.
 run(zcat ${usr}/share/man/man1/parallax-cli.1.gz)
 set(man "${out}")

@@ -2,13 +2,13 @@
 
 #include "ExrHeaderCheck.h"
 #include "ImageBudget.h"
+#include "ImageModule.h"
 #include "PngCheck.h"
+#include "PngCodec.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/io/FileExtension.h"
 #include "parallax/io/Inputs.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -20,26 +20,24 @@
 namespace px {
 namespace {
 
-// OIIO's messages end with newlines and sometimes repeat the file name; keep one clean line.
-std::string oiioMessage(std::string message) {
-    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
-        message.pop_back();
-    std::replace(message.begin(), message.end(), '\n', ' ');
-    return message.empty() ? std::string("unknown image library error") : message;
+// PNG by the core's own codec, anything else by the OpenImageIO module (loaded now if not yet).
+Result<std::unique_ptr<ImageDecoder>> openDecoder(const std::string& path) {
+    if (hasPngSignature(path))
+        return openPng(path);
+    Result<const ImageModule*> module = imageModule();
+    if (!module)
+        return module.error();
+    return (*module)->open(path);
 }
 
-OIIO::TypeDesc typeOf(PixelFormat format) {
-    switch (format) {
-    case PixelFormat::UInt8:
-        return OIIO::TypeDesc::UINT8;
-    case PixelFormat::UInt16:
-        return OIIO::TypeDesc::UINT16;
-    case PixelFormat::Half:
-        return OIIO::TypeDesc::HALF;
-    case PixelFormat::Float:
-        return OIIO::TypeDesc::FLOAT;
-    }
-    return OIIO::TypeDesc::UINT8;
+Result<std::vector<unsigned char>> encodeFor(const std::string& path, const Image& image,
+                                             const ImageWriteOptions& options) {
+    if (lowerExtension(path) == ".png")
+        return encodePng(image, options.format, options.srgb);
+    Result<const ImageModule*> module = imageModule();
+    if (!module)
+        return module.error();
+    return (*module)->encode(path, image, options);
 }
 
 Status checkFinite(const std::string& path, const Image& image) {
@@ -106,48 +104,33 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
     if (Status png = checkPngStructure(path); !png)
         return png.error();
 
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1); // material maps are not premultiplied
-    auto input = OIIO::ImageInput::open(path, &config);
-    if (!input)
-        return fileError(path, "not a readable image (" + oiioMessage(OIIO::geterror()) + ")");
-
-    const OIIO::ImageSpec& spec = input->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    Result<std::unique_ptr<ImageDecoder>> decoder = openDecoder(path);
+    if (!decoder)
+        return fileError(path, decoder.error().message);
+    const ImageHeader& header = (*decoder)->header();
+    if (header.width <= 0 || header.height <= 0 || header.channels <= 0)
         return fileError(path, "the image has zero size");
-    if (spec.depth > 1)
+    if (header.depth > 1)
         return fileError(path, "volume images are not supported");
-    if (spec.width > options.maxSide || spec.height > options.maxSide)
-        return fileError(path, "the image is " + std::to_string(spec.width) + "x" +
-                                   std::to_string(spec.height) + ", larger than the limit of " +
+    if (header.width > options.maxSide || header.height > options.maxSide)
+        return fileError(path, "the image is " + std::to_string(header.width) + "x" +
+                                   std::to_string(header.height) + ", larger than the limit of " +
                                    std::to_string(options.maxSide) + " texels a side");
-
-    // Bits as stored: the channels' own formats (EXR mixes half and float), or fewer than 8 bits
-    // a sample where the format says so.
-    std::int64_t bitsPerTexel = 0;
-    for (int c = 0; c < spec.nchannels; ++c)
-        bitsPerTexel += static_cast<std::int64_t>(spec.channelformat(c).size()) * 8;
-    if (const int bits = spec.get_int_attribute("oiio:BitsPerSample"); bits > 0)
-        bitsPerTexel = static_cast<std::int64_t>(bits) * spec.nchannels;
-    ImageClaim claim{spec.width,
-                     spec.height,
-                     spec.nchannels,
-                     bitsPerTexel,
-                     input->format_name(),
-                     spec.get_string_attribute("compression"),
+    ImageClaim claim{header.width,
+                     header.height,
+                     header.channels,
+                     header.bitsPerTexel,
+                     header.format,
+                     header.compression,
                      static_cast<std::int64_t>(file->size())};
     if (Status fits = checkImageClaim(path, claim); !fits)
         return fits.error();
-    if (Status data = checkPngData(path); !data)
-        return data.error();
 
     try {
-        Image image(spec.width, spec.height, spec.nchannels);
-        if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-            return fileError(path, "the image data could not be read, the file may be truncated (" +
-                                       oiioMessage(input->geterror()) + ")");
-        input->close();
-        image.alphaOnly = spec.nchannels == 1 && spec.alpha_channel == 0;
+        Image image(header.width, header.height, header.channels);
+        if (Status read = (*decoder)->read(image.pixels.data()); !read)
+            return fileError(path, read.error().message);
+        image.alphaOnly = header.alphaOnly;
         if (options.rejectNonFinite) {
             if (Status finite = checkFinite(path, image); !finite)
                 return finite.error();
@@ -156,8 +139,8 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
             return s.error();
         return image;
     } catch (const std::bad_alloc&) {
-        return fileError(path, "not enough memory to read the " + std::to_string(spec.width) + "x" +
-                                   std::to_string(spec.height) + " image");
+        return fileError(path, "not enough memory to read the " + std::to_string(header.width) +
+                                   "x" + std::to_string(header.height) + " image");
     }
 }
 
@@ -194,35 +177,13 @@ Status writeImage(const std::string& path, const Image& image, const ImageWriteO
         return fileError(path, "this file type cannot store the requested pixel format "
                                "(PNG: 8/16-bit, EXR: half/float, TIFF: any)");
 
-    auto output = OIIO::ImageOutput::create(path);
-    if (!output)
-        return fileError(path, "no image writer for this extension");
-
-    OIIO::ImageSpec spec(image.width, image.height, image.channels, typeOf(options.format));
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    // A PNG tagged "Linear" gets a gAMA 1.0 chunk, which Godot's and Unity's loaders apply: a
-    // flat normal's 0.498 would read as 0.729. Untagged, every loader takes the values as stored.
-    if (options.srgb)
-        spec.attribute("oiio:ColorSpace", "sRGB");
-    else if (lowerExtension(path) != ".png")
-        spec.attribute("oiio:ColorSpace", "Linear");
-    if (lowerExtension(path) == ".exr")
-        spec.attribute("compression", "zip");
-
     // Encoded in memory, then written with every step checked (writeFileAtomically): the image
     // writers do not all report a full disk.
-    std::vector<unsigned char> encoded;
-    OIIO::Filesystem::IOVecOutput memory(encoded);
-    if (!output->supports("ioproxy") || !output->set_ioproxy(&memory))
-        return fileError(path, "this file type cannot be encoded in memory");
-    if (!output->open(path, spec))
-        return fileError(path, "cannot encode the image (" + oiioMessage(output->geterror()) + ")");
-    const bool written = output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
-    const bool closed = output->close();
-    if (!written || !closed)
-        return fileError(path, "encoding failed (" + oiioMessage(output->geterror()) + ")");
+    Result<std::vector<unsigned char>> encoded = encodeFor(path, image, options);
+    if (!encoded)
+        return fileError(path, encoded.error().message);
     return writeFileAtomically(
-        path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
+        path, std::string_view(reinterpret_cast<const char*>(encoded->data()), encoded->size()));
 }
 
 } // namespace px

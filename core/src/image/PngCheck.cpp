@@ -1,15 +1,10 @@
 #include "PngCheck.h"
 
 #include <array>
-#include <csetjmp>
 #include <cstdint>
-#include <cstdio>
 #include <fstream>
 #include <iterator>
-#include <memory>
-#include <png.h>
 #include <string>
-#include <vector>
 
 namespace px {
 
@@ -39,39 +34,6 @@ std::uint32_t big32(const unsigned char* p) {
            static_cast<std::uint32_t>(p[2]) << 8 | static_cast<std::uint32_t>(p[3]);
 }
 
-// libpng reports an error by calling this and expects it not to return: the message is kept and
-// control goes back to the setjmp in decodeRows. Warnings are dropped (OpenImageIO reads on).
-void keepError(png_structp png, png_const_charp message) {
-    *static_cast<std::string*>(png_get_error_ptr(png)) = message ? message : "";
-    png_longjmp(png, 1);
-}
-
-void dropWarning(png_structp, png_const_charp) {}
-
-// What a decode keeps outside the frame that calls setjmp, so that nothing there changes between
-// the setjmp and a longjmp back to it.
-struct PngDecode {
-    std::string message;
-    std::vector<png_byte> row;
-};
-
-// Reads every row of every pass into one row buffer; false with decode.message on libpng's error.
-bool decodeRows(png_structp png, png_infop info, PngDecode& decode) {
-    if (setjmp(png_jmpbuf(png)) != 0)
-        return false;
-    png_set_sig_bytes(png, 8);
-    png_read_info(png, info);
-    const int passes = png_set_interlace_handling(png);
-    png_read_update_info(png, info);
-    decode.row.resize(png_get_rowbytes(png, info));
-    const png_uint_32 height = png_get_image_height(png, info);
-    for (int pass = 0; pass < passes; ++pass)
-        for (png_uint_32 y = 0; y < height; ++y)
-            png_read_row(png, decode.row.data(), nullptr);
-    png_read_end(png, nullptr);
-    return true;
-}
-
 } // namespace
 
 Status checkPngStructure(const std::string& path) {
@@ -98,29 +60,6 @@ Status checkPngStructure(const std::string& path) {
     }
     return fileError(path, "the file is truncated (it ends at byte " +
                                std::to_string(bytes.size()) + " without the PNG's IEND chunk)");
-}
-
-Status checkPngData(const std::string& path) {
-    const std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
-    unsigned char signature[8] = {};
-    if (!file || std::fread(signature, 1, 8, file.get()) != 8 ||
-        !std::equal(kSignature, kSignature + 8, signature))
-        return success();
-    PngDecode decode;
-    png_structp png =
-        png_create_read_struct(PNG_LIBPNG_VER_STRING, &decode.message, keepError, dropWarning);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (!info) {
-        png_destroy_read_struct(&png, nullptr, nullptr);
-        return fileError(path, "not enough memory to check the PNG");
-    }
-    png_init_io(png, file.get());
-    const bool decoded = decodeRows(png, info, decode);
-    png_destroy_read_struct(&png, &info, nullptr);
-    if (!decoded)
-        return fileError(
-            path, "the file is damaged (its image data does not decode: " + decode.message + ")");
-    return success();
 }
 
 } // namespace px

@@ -3,6 +3,8 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/ExrHeaderCheck.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ImageBudget.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ImageFile.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ImageModule.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ImageSet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PngCheck.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/PngCodec.cpp
 )

@@ -2,12 +2,12 @@
 
 #include "parallax/image/ImageFile.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <tbb/parallel_for.h>
+#include <vector>
 
 namespace px {
 
@@ -45,20 +45,74 @@ glm::vec3 sampleEquirect(const Image& map, glm::vec3 direction) {
            fy * ((1.0f - fx) * texel(x0, y0 + 1) + fx * texel(x0 + 1, y0 + 1));
 }
 
+namespace {
+
+// One axis of a tent resampling: for each of `to` output texels, the weights of the `from` source
+// texels under a tent as wide as the ratio (one texel when enlarging), at the texels' centres,
+// normalised over those inside the map (the edge texels are not weighted twice).
+struct TentAxis {
+    std::vector<int> first; // the first source texel of each output texel
+    std::vector<std::vector<float>> weights;
+};
+
+TentAxis tentAxis(int from, int to) {
+    TentAxis axis;
+    const double ratio = static_cast<double>(from) / to;
+    const double radius = std::max(ratio, 1.0);
+    for (int i = 0; i < to; ++i) {
+        const double centre = (i + 0.5) * ratio;
+        const int lo = std::max(0, static_cast<int>(std::floor(centre - radius)));
+        const int hi = std::min(from - 1, static_cast<int>(std::ceil(centre + radius)));
+        std::vector<float> w;
+        double sum = 0.0;
+        for (int j = lo; j <= hi; ++j) {
+            const double weight = std::max(0.0, 1.0 - std::abs(j + 0.5 - centre) / radius);
+            w.push_back(static_cast<float>(weight));
+            sum += weight;
+        }
+        for (float& v : w)
+            v = static_cast<float>(v / sum);
+        axis.first.push_back(lo);
+        axis.weights.push_back(std::move(w));
+    }
+    return axis;
+}
+
+} // namespace
+
 Image resampledEnvironment(const Image& map, int width) {
     const int height = std::max(1, width / 2);
     if (map.width == width && map.height == height)
         return map;
-    // A tent filter as wide as the ratio: every source texel counts by its area, whatever the
-    // ratio, and no texel comes out negative (a windowed sinc rings below zero around the sun).
-    const OIIO::ImageBuf source(
-        OIIO::ImageSpec(map.width, map.height, map.channels, OIIO::TypeDesc::FLOAT),
-        const_cast<float*>(map.pixels.data())); // only read
-    OIIO::ImageBuf resampled(OIIO::ImageSpec(width, height, map.channels, OIIO::TypeDesc::FLOAT));
-    OIIO::ImageBufAlgo::resize(resampled, source, "triangle");
-    Image out(width, height, map.channels);
-    resampled.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, map.channels),
-                         OIIO::TypeDesc::FLOAT, out.pixels.data());
+    // A tent filter as wide as the ratio: every source texel counts, whatever the ratio, and no
+    // texel comes out negative (a windowed sinc rings below zero around the sun). Rows first,
+    // then columns (the tent is separable).
+    const TentAxis across = tentAxis(map.width, width);
+    const TentAxis down = tentAxis(map.height, height);
+    const int c = map.channels;
+    Image rows(width, map.height, c);
+    const ImageWriter putRow = rows.writer();
+    tbb::parallel_for(0, map.height, [&](int y) {
+        for (int x = 0; x < width; ++x)
+            for (int k = 0; k < c; ++k) {
+                float sum = 0.0f;
+                for (std::size_t j = 0; j < across.weights[x].size(); ++j)
+                    sum +=
+                        across.weights[x][j] * map.at(across.first[x] + static_cast<int>(j), y, k);
+                putRow.at(x, y, k) = sum;
+            }
+    });
+    Image out(width, height, c);
+    const ImageWriter put = out.writer();
+    tbb::parallel_for(0, height, [&](int y) {
+        for (int x = 0; x < width; ++x)
+            for (int k = 0; k < c; ++k) {
+                float sum = 0.0f;
+                for (std::size_t j = 0; j < down.weights[y].size(); ++j)
+                    sum += down.weights[y][j] * rows.at(x, down.first[y] + static_cast<int>(j), k);
+                put.at(x, y, k) = sum;
+            }
+    });
     return out;
 }
 

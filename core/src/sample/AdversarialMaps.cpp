@@ -1,7 +1,7 @@
 #include "AdversarialMaps.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include "image/ImageModule.h"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -62,24 +62,14 @@ void throughJpeg(HeightField& f) {
     for (std::size_t i = 0; i < pixels.size(); ++i)
         pixels[i] =
             static_cast<unsigned char>(std::lround(std::clamp(f.texels[i], 0.0f, 1.0f) * 255));
-    std::vector<unsigned char> file;
-    OIIO::Filesystem::IOVecOutput sink(file);
-    OIIO::ImageSpec spec(f.width, f.height, 1, OIIO::TypeDesc::UINT8);
-    spec.attribute("Compression", "jpeg:75");
-    void* sinkPtr = &sink;
-    spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &sinkPtr);
-    auto writer = OIIO::ImageOutput::create("map.jpg");
-    if (!writer || !writer->open("map.jpg", spec) ||
-        !writer->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !writer->close())
-        throw std::runtime_error("the JPEG map class: OpenImageIO could not encode a JPEG");
-    OIIO::Filesystem::IOMemReader source(file.data(), file.size());
-    OIIO::ImageSpec config;
-    void* sourcePtr = &source;
-    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &sourcePtr);
-    auto reader = OIIO::ImageInput::open("map.jpg", &config);
-    if (!reader || reader->spec().width != f.width || reader->spec().height != f.height ||
-        !reader->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, pixels.data()))
-        throw std::runtime_error("the JPEG map class: OpenImageIO could not decode its JPEG");
+    Result<const ImageModule*> module = imageModule();
+    if (!module)
+        throw std::runtime_error("the JPEG map class: " + module.error().message);
+    Result<std::vector<unsigned char>> decoded =
+        (*module)->throughJpeg(pixels, f.width, f.height, 75);
+    if (!decoded)
+        throw std::runtime_error("the JPEG map class: " + decoded.error().message);
+    pixels = std::move(*decoded);
     for (std::size_t i = 0; i < pixels.size(); ++i)
         f.texels[i] = pixels[i] / 255.0f;
 }
