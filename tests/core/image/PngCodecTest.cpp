@@ -120,6 +120,7 @@ std::string writeCase(const std::string& path, const PngCase& c, std::mt19937& r
         }
     }
     std::vector<png_bytep> pointers;
+    pointers.reserve(rows.size());
     for (auto& row : rows)
         pointers.push_back(row.data());
     png_write_image(png, pointers.data());

@@ -1,5 +1,6 @@
 #pragma once
-// Reading and writing image files (OpenImageIO behind the scenes; no OIIO type leaks out).
+// Reading and writing image files: PNG by the core's own libpng codec, other formats by OpenImageIO
+// in a module loaded on first need (src/image/ImageModule.h); no library type leaks out.
 // Failures come back as a sentence naming the file; writes are atomic: the data goes to a
 // temporary file in the target's folder which is then renamed, so a failed or cancelled write
 // never leaves half a file and never touches an existing target.
