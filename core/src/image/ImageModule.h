@@ -3,7 +3,7 @@
 // libraries take about half a second of CPU to load, in every run of the command line, and most
 // runs read and write only PNG (PngCodec.h). Every other format, the environment's resampling and
 // the JPEG map class go through here. The module is built from the same tree; it is found next to
-// the program as installed (../lib/.../parallax-studio/), else where the build put it, or where
+// the program as installed (../lib/parallax-studio/), else where the build put it, or where
 // PX_IMAGE_MODULE names it.
 
 #include "ImageCodec.h"
