@@ -12,6 +12,7 @@
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QTest>
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -194,27 +195,44 @@ int execShard(QObject* test, int argc, char** argv) {
     for (int i = 0; i < argc; ++i)
         arguments << QString::fromLocal8Bit(argv[i]);
     const px::test::TestShard shard = px::test::testShard();
-    if (shard.count > 1) {
-        const QMetaObject* meta = test->metaObject();
-        const QStringList fixtures = {"initTestCase", "cleanupTestCase", "init", "cleanup"};
-        std::size_t function = 0;
-        int taken = 0;
-        for (int m = meta->methodOffset(); m < meta->methodCount(); ++m) {
-            const QMetaMethod method = meta->method(m);
-            const QString name = QString::fromLatin1(method.name());
-            if (method.methodType() != QMetaMethod::Slot ||
-                method.access() != QMetaMethod::Private || fixtures.contains(name) ||
-                name.endsWith("_data"))
-                continue;
-            if (shard.takes(function++)) {
-                arguments << name;
-                ++taken;
-            }
-        }
-        if (taken == 0) // no names would run them all
-            qFatal("shard %zu/%zu takes none of the %zu test functions", shard.index, shard.count,
-                   function);
+    if (shard.count <= 1)
+        return QTest::qExec(test, arguments);
+    // The shard's functions, in declaration order.
+    const QMetaObject* meta = test->metaObject();
+    const QStringList fixtures = {"initTestCase", "cleanupTestCase", "init", "cleanup"};
+    QStringList all, taken;
+    for (int m = meta->methodOffset(); m < meta->methodCount(); ++m) {
+        const QMetaMethod method = meta->method(m);
+        const QString name = QString::fromLatin1(method.name());
+        if (method.methodType() != QMetaMethod::Slot || method.access() != QMetaMethod::Private ||
+            fixtures.contains(name) || name.endsWith("_data"))
+            continue;
+        if (shard.takes(static_cast<std::size_t>(all.size())))
+            taken << name;
+        all << name;
     }
+    // Functions named on the command line ("name" or "name:row") run where the shard takes them;
+    // otherwise the shard's own functions are named.
+    QStringList named;
+    for (int i = 1; i < arguments.size(); ++i)
+        if (all.contains(arguments[i].section(':', 0, 0)))
+            named << arguments[i];
+    if (!named.isEmpty()) {
+        for (const QString& name : named)
+            if (!taken.contains(name.section(':', 0, 0)))
+                arguments.removeAll(name);
+    } else {
+        arguments << taken;
+    }
+    const bool none = named.isEmpty()
+                          ? taken.isEmpty()
+                          : std::none_of(named.begin(), named.end(), [&](const QString& n) {
+                                return taken.contains(n.section(':', 0, 0));
+                            });
+    if (none) // no names would run them all
+        qFatal("shard %zu/%zu takes none of the %lld test functions%s", shard.index, shard.count,
+               static_cast<long long>(named.isEmpty() ? all.size() : named.size()),
+               named.isEmpty() ? "" : " named");
     return QTest::qExec(test, arguments);
 }
 

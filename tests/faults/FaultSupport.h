@@ -70,7 +70,8 @@ bool remountReadOnly(const QString& folder);
 void unmount(const QString& folder);
 
 // Runs the test object's functions as QTest::qExec does; under PX_TEST_SHARD=i/n (ctest's shards,
-// px_shard_test) only every n-th of its test functions from the i-th, whole with their rows.
+// px_shard_test) only every n-th of its test functions from the i-th, whole with their rows; of
+// functions named on the command line, those the shard takes.
 int execShard(QObject* test, int argc, char** argv);
 
 } // namespace px::faults
