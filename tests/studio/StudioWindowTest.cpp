@@ -461,8 +461,8 @@ private slots:
         QElapsedTimer clock;
         clock.start();
         w->startBake(BakeKind::Normal);
-        const QRegularExpression line("Baked the normal map in ([0-9.]+) s, shown ([0-9.]+) s "
-                                      "after Bake\\.");
+        const QRegularExpression line("Baked the normal map in ([0-9.]+) s on the CPU, shown "
+                                      "([0-9.]+) s after Bake\\.");
         QRegularExpressionMatch m;
         QTRY_VERIFY_WITH_TIMEOUT((m = line.match(w->mapsPanel()->bakeStatus())).hasMatch(), 60000);
         const double elapsed = clock.elapsed() / 1000.0;
@@ -674,6 +674,10 @@ private slots:
             (preview->update(), w->statusBar()->currentMessage().contains("on the GPU")), 60000);
         QVERIFY2(w->statusBar()->currentMessage().contains("s after Bake"),
                  qPrintable(w->statusBar()->currentMessage()));
+        // The panel's line says so too, naming the renderer.
+        QVERIFY2(
+            w->mapsPanel()->bakeStatus().contains(" s on the GPU (" + outcome.gpu + "), shown "),
+            qPrintable(w->mapsPanel()->bakeStatus()));
     }
 
     void cancelledBakeChangesNothing() {

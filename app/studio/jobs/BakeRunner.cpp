@@ -28,6 +28,11 @@ QString bakeTitle(BakeKind kind) {
     return {};
 }
 
+QString bakeDevice(const BakeOutcome& outcome) {
+    return outcome.gpu.isEmpty() ? QObject::tr("on the CPU")
+                                 : QObject::tr("on the GPU (%1)").arg(outcome.gpu);
+}
+
 namespace {
 
 BakeOutcome runBake(const BakeRequest& request, const BakeControl& control,

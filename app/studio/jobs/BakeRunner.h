@@ -45,6 +45,9 @@ struct BakeOutcome {
     QString gpu;          // cone bakes: the GL renderer that baked them, empty if the CPU did
 };
 
+// Where a bake ran, as its status line says it: "on the CPU", "on the GPU (llvmpipe ...)".
+QString bakeDevice(const BakeOutcome& outcome);
+
 class BakeRunner : public QObject {
     Q_OBJECT
 public:

@@ -79,12 +79,11 @@ MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* par
         m_bakeLabel->setText(
             outcome.cancelled
                 ? tr("The %1 bake was cancelled.").arg(bakeTitle(outcome.request.kind))
-            : !outcome.error.isEmpty()
-                ? outcome.error
-                : tr("Baked the %1 in %2 s%3.")
-                      .arg(bakeTitle(outcome.request.kind))
-                      .arg(outcome.seconds, 0, 'f', 2)
-                      .arg(outcome.gpu.isEmpty() ? QString() : tr(" on the GPU")));
+            : !outcome.error.isEmpty() ? outcome.error
+                                       : tr("Baked the %1 in %2 s %3.")
+                                             .arg(bakeTitle(outcome.request.kind))
+                                             .arg(outcome.seconds, 0, 'f', 2)
+                                             .arg(bakeDevice(outcome)));
         m_progress->setValue(outcome.cancelled || !outcome.error.isEmpty() ? 0 : 100);
     });
     connect(m_baker, &BakeRunner::idle, this, [this] {
@@ -99,10 +98,12 @@ QString MapsPanel::bakeStatus() const {
     return m_bakeLabel->text();
 }
 
-void MapsPanel::showBakeShown(BakeKind kind, double bakeSeconds, double shownSeconds) {
-    m_bakeLabel->setText(tr("Baked the %1 in %2 s, shown %3 s after Bake.")
+void MapsPanel::showBakeShown(BakeKind kind, double bakeSeconds, const QString& device,
+                              double shownSeconds) {
+    m_bakeLabel->setText(tr("Baked the %1 in %2 s %3, shown %4 s after Bake.")
                              .arg(bakeTitle(kind))
                              .arg(bakeSeconds, 0, 'f', 2)
+                             .arg(device)
                              .arg(shownSeconds, 0, 'f', 2));
 }
 

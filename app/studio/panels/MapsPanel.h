@@ -27,9 +27,11 @@ public:
     QProgressBar* progressBar() const { return m_progress; }
     QPushButton* cancelButton() const { return m_cancel; }
     QString bakeStatus() const;
-    // The bake's line once its map is shown: the bake's own time and the wait from asking for it
-    // to the views drawing with it (a new map can need new shader variants, compiled then).
-    void showBakeShown(BakeKind kind, double bakeSeconds, double shownSeconds);
+    // The bake's line once its map is shown: the bake's own time, where it ran (bakeDevice) and the
+    // wait from asking for it to the views drawing with it (a new map can need new shader
+    // variants, compiled then).
+    void showBakeShown(BakeKind kind, double bakeSeconds, const QString& device,
+                       double shownSeconds);
     NormalFilter normalFilter() const;
 
 signals:

@@ -303,14 +303,13 @@ void MainWindow::onBakeFinished(const BakeOutcome& outcome) {
     const BakeKind kind = outcome.request.kind;
     const double bakeSeconds = outcome.seconds;
     const auto asked = outcome.request.asked;
-    const QString where =
-        outcome.gpu.isEmpty() ? QString() : tr(" on the GPU (%1)").arg(outcome.gpu);
+    const QString where = bakeDevice(outcome);
     auto report = [this, kind, bakeSeconds, asked, where] {
         const double shown =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - asked).count();
-        m_mapsPanel->showBakeShown(kind, bakeSeconds, shown);
+        m_mapsPanel->showBakeShown(kind, bakeSeconds, where, shown);
         statusBar()->showMessage(
-            tr("Baked the %1 in %2 s%3, shown %4 s after Bake; it is saved with the material.")
+            tr("Baked the %1 in %2 s %3, shown %4 s after Bake; it is saved with the material.")
                 .arg(bakeTitle(kind))
                 .arg(bakeSeconds, 0, 'f', 2)
                 .arg(where)
