@@ -1,8 +1,8 @@
 // The preview's frame pacing (preview/FramePacer.h) on a GL context, with a clock the draws
 // advance by a cost a pixel the test sets: a frame that fits is whole in one step; a dear one is
-// drawn over several steps, none over its budget, a stand-in shown meanwhile, every row once; a new
-// scene starts over; a budget of 0 draws nothing; a cost that jumps down the view is learnt; the
-// views share a turn's budget and breathe after it.
+// drawn over several steps, none over its budget, a stand-in shown meanwhile, every row once; one
+// the clock cannot see is whole at once; a new scene starts over; a budget of 0 draws nothing; a
+// cost that jumps down the view is learnt; the views share a turn's budget and breathe after it.
 
 #include "preview/FramePacer.h"
 
@@ -139,6 +139,20 @@ private slots:
         QVERIFY(s.bands >= 1);
         QCOMPARE(scene.rowDraws, std::vector<int>(kSize.y, 1));
         QVERIFY(qAbs(s.frameMs - 1e-4 * kSize.x * kSize.y) < 1e-9);
+        QCOMPARE(uniformColour(*m_shown), std::optional<QColor>(QColor(Qt::red)));
+    }
+
+    // A draw the clock does not see (a coarse clock, a fast GPU) costs nothing: the frame is whole
+    // in one step, in doubling bands, every row once (it took a row a step, 120 steps here).
+    void aFrameTheClockCannotSeeIsWholeInOneStep() {
+        FakeScene scene;
+        m_scene = &scene;
+        scene.perPixel = [](int) { return 0.0; };
+        FramePacer pacer;
+        const FramePacer::Step s = step(pacer, scene, 1, 30.0);
+        QVERIFY(s.complete);
+        QVERIFY2(s.bands <= 12, qPrintable(QString::number(s.bands)));
+        QCOMPARE(scene.rowDraws, std::vector<int>(kSize.y, 1));
         QCOMPARE(uniformColour(*m_shown), std::optional<QColor>(QColor(Qt::red)));
     }
 

@@ -197,7 +197,10 @@ Result<FramePacer::Step> FramePacer::step(std::uint64_t serial, std::uint64_t co
         const double rowMs = std::max(*m_msPerPixel, m_meanPerPixel) * width;
         int rows = 0;
         if (m_rowMs.empty()) {
-            rows = static_cast<int>(left / rowMs);
+            // A cost the clock did not see (a coarse clock, a fast GPU) is no limit: the band
+            // doubling is. (left / 0 cast to int was INT_MIN: one row a step, a frame over
+            // hundreds of turns.)
+            rows = rowMs > 0.0 ? static_cast<int>(std::min(left / rowMs, double(height))) : height;
         } else {
             // The last frame of this cost said what each row costs: a band stops before the
             // rows that were dear (a small mesh under much sky), never grows past the estimate.
