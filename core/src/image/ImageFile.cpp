@@ -9,25 +9,37 @@
 #include "parallax/io/FileExtension.h"
 #include "parallax/io/Inputs.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <new>
-#include <system_error>
+#include <string_view>
 
 namespace px {
 namespace {
 
-// PNG by the core's own codec, anything else by the OpenImageIO module (loaded now if not yet).
-Result<std::unique_ptr<ImageDecoder>> openDecoder(const std::string& path) {
-    if (hasPngSignature(path))
-        return openPng(path);
+// PNG by the core's own codec, from the bytes read once through the input's descriptor (its
+// chunks checked first); anything else by the OpenImageIO module (loaded now if not yet).
+Result<std::unique_ptr<ImageDecoder>> openDecoder(const std::string& path, const InputFile& file) {
+    char magic[8] = {};
+    if (file.size() >= sizeof magic && file.readAt(0, magic, sizeof magic).ok() &&
+        hasPngSignature(std::string_view(magic, sizeof magic))) {
+        Result<std::string> bytes = file.readAll(file.size());
+        if (!bytes)
+            return bytes.error();
+        if (Status png = checkPngStructure(path, *bytes); !png)
+            return png.error();
+        Result<std::unique_ptr<ImageDecoder>> decoder = openPng(std::move(*bytes));
+        if (!decoder)
+            return fileError(path, decoder.error().message);
+        return decoder;
+    }
     Result<const ImageModule*> module = imageModule();
     if (!module)
-        return module.error();
-    return (*module)->open(path);
+        return fileError(path, module.error().message);
+    Result<std::unique_ptr<ImageDecoder>> decoder = (*module)->open(path);
+    if (!decoder)
+        return fileError(path, decoder.error().message);
+    return decoder;
 }
 
 Result<std::vector<unsigned char>> encodeFor(const std::string& path, const Image& image,
@@ -101,12 +113,10 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
     // Before OpenEXR, which allocates what a damaged header claims (fuzzing found 1.7 GB).
     if (Status exr = checkExrHeader(path); !exr)
         return exr.error();
-    if (Status png = checkPngStructure(path); !png)
-        return png.error();
 
-    Result<std::unique_ptr<ImageDecoder>> decoder = openDecoder(path);
+    Result<std::unique_ptr<ImageDecoder>> decoder = openDecoder(path, *file);
     if (!decoder)
-        return fileError(path, decoder.error().message);
+        return decoder.error();
     const ImageHeader& header = (*decoder)->header();
     if (header.width <= 0 || header.height <= 0 || header.channels <= 0)
         return fileError(path, "the image has zero size");

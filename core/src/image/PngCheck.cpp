@@ -2,9 +2,8 @@
 
 #include <array>
 #include <cstdint>
-#include <fstream>
-#include <iterator>
 #include <string>
+#include <string_view>
 
 namespace px {
 
@@ -36,16 +35,17 @@ std::uint32_t big32(const unsigned char* p) {
 
 } // namespace
 
-Status checkPngStructure(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+bool hasPngSignature(std::string_view bytes) {
+    return bytes.size() >= 8 && std::equal(kSignature, kSignature + 8,
+                                           reinterpret_cast<const unsigned char*>(bytes.data()));
+}
+
+Status checkPngStructure(const std::string& path, std::string_view bytes) {
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, data))
-        return success();
     std::size_t at = 8;
     while (at + 12 <= bytes.size()) {
         const std::uint32_t length = big32(data + at);
-        const std::string type = bytes.substr(at + 4, 4);
+        const std::string type(bytes.substr(at + 4, 4));
         if (length > bytes.size() - at - 12)
             return fileError(path, "the file is truncated (its " + type +
                                        " chunk runs past the end, "

@@ -5,11 +5,15 @@
 #include "parallax/Result.h"
 
 #include <string>
+#include <string_view>
 
 namespace px {
 
-// Walks the chunks of a PNG file: each must fit in the file and match its CRC, and the file must
-// end with IEND. Files that are not PNG (by their signature) pass untouched.
-Status checkPngStructure(const std::string& path);
+// True if the bytes start with the PNG signature (the content decides, not the extension).
+bool hasPngSignature(std::string_view bytes);
+
+// Walks the chunks of the PNG file `path` whose content is `bytes` (hasPngSignature): each must
+// fit in the file and match its CRC, and the file must end with IEND.
+Status checkPngStructure(const std::string& path, std::string_view bytes);
 
 } // namespace px

@@ -3,13 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <csetjmp>
-#include <cstdio>
 #include <png.h>
 
 namespace px {
 namespace {
-
-constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
 // libpng reports an error by calling this and expects it not to return: the message is kept and
 // control goes back to the setjmp of the call that failed. Warnings are dropped (libpng reads on).
@@ -20,11 +17,23 @@ void keepError(png_structp png, png_const_charp message) {
 
 void dropWarning(png_structp, png_const_charp) {}
 
-using File = std::unique_ptr<FILE, int (*)(FILE*)>;
+// libpng's reads, from the file's bytes in memory; past the end is libpng's error.
+struct MemorySource {
+    std::string bytes;
+    std::size_t at = 0;
+};
+
+void readBytes(png_structp png, png_bytep out, png_size_t size) {
+    auto* source = static_cast<MemorySource*>(png_get_io_ptr(png));
+    if (size > source->bytes.size() - source->at)
+        png_error(png, "the data ends early");
+    std::copy_n(source->bytes.data() + source->at, size, out);
+    source->at += size;
+}
 
 class PngDecoder final : public ImageDecoder {
 public:
-    explicit PngDecoder(File file) : m_file(std::move(file)) {}
+    explicit PngDecoder(std::string bytes) : m_source{std::move(bytes), 0} {}
     ~PngDecoder() override { png_destroy_read_struct(&m_png, &m_info, nullptr); }
 
     // False with m_message on libpng's error (no locals between setjmp and longjmp).
@@ -37,7 +46,7 @@ public:
         }
         if (setjmp(png_jmpbuf(m_png)) != 0)
             return false;
-        png_init_io(m_png, m_file.get());
+        png_set_read_fn(m_png, &m_source, readBytes);
         png_read_info(m_png, m_info);
         const int stored = png_get_bit_depth(m_png, m_info);
         const int colour = png_get_color_type(m_png, m_info);
@@ -110,7 +119,7 @@ private:
         }
     }
 
-    File m_file;
+    MemorySource m_source;
     png_structp m_png = nullptr;
     png_infop m_info = nullptr;
     std::string m_message;
@@ -179,18 +188,8 @@ bool encodeRows(png_structp png, png_infop info, const Image& image, bool sixtee
 
 } // namespace
 
-bool hasPngSignature(const std::string& path) {
-    const File file(std::fopen(path.c_str(), "rb"), std::fclose);
-    unsigned char signature[8] = {};
-    return file && std::fread(signature, 1, 8, file.get()) == 8 &&
-           std::equal(kSignature, kSignature + 8, signature);
-}
-
-Result<std::unique_ptr<ImageDecoder>> openPng(const std::string& path) {
-    File file(std::fopen(path.c_str(), "rb"), std::fclose);
-    if (!file)
-        return Error{"not a readable image (it cannot be opened)"};
-    auto decoder = std::make_unique<PngDecoder>(std::move(file));
+Result<std::unique_ptr<ImageDecoder>> openPng(std::string bytes) {
+    auto decoder = std::make_unique<PngDecoder>(std::move(bytes));
     if (!decoder->readInfo())
         return Error{"not a readable image (" + decoder->message() + ")"};
     return std::unique_ptr<ImageDecoder>(std::move(decoder));
