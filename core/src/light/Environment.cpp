@@ -78,6 +78,30 @@ TentAxis tentAxis(int from, int to) {
     return axis;
 }
 
+// One pass of the separable tent: along each row (`alongRows`) or each column of `in`, the
+// output texels `axis` describes.
+Image tentPass(const Image& in, const TentAxis& axis, bool alongRows) {
+    const int to = static_cast<int>(axis.first.size());
+    const int width = alongRows ? to : in.width, height = alongRows ? in.height : to;
+    Image out(width, height, in.channels);
+    const ImageWriter put = out.writer();
+    tbb::parallel_for(0, height, [&](int y) {
+        for (int x = 0; x < width; ++x) {
+            const int o = alongRows ? x : y;
+            const std::vector<float>& weights = axis.weights[o];
+            for (int k = 0; k < in.channels; ++k) {
+                float sum = 0.0f;
+                for (std::size_t j = 0; j < weights.size(); ++j) {
+                    const int s = axis.first[o] + static_cast<int>(j);
+                    sum += weights[j] * (alongRows ? in.at(s, y, k) : in.at(x, s, k));
+                }
+                put.at(x, y, k) = sum;
+            }
+        }
+    });
+    return out;
+}
+
 } // namespace
 
 Image resampledEnvironment(const Image& map, int width) {
@@ -87,33 +111,8 @@ Image resampledEnvironment(const Image& map, int width) {
     // A tent filter as wide as the ratio: every source texel counts, whatever the ratio, and no
     // texel comes out negative (a windowed sinc rings below zero around the sun). Rows first,
     // then columns (the tent is separable).
-    const TentAxis across = tentAxis(map.width, width);
-    const TentAxis down = tentAxis(map.height, height);
-    const int c = map.channels;
-    Image rows(width, map.height, c);
-    const ImageWriter putRow = rows.writer();
-    tbb::parallel_for(0, map.height, [&](int y) {
-        for (int x = 0; x < width; ++x)
-            for (int k = 0; k < c; ++k) {
-                float sum = 0.0f;
-                for (std::size_t j = 0; j < across.weights[x].size(); ++j)
-                    sum +=
-                        across.weights[x][j] * map.at(across.first[x] + static_cast<int>(j), y, k);
-                putRow.at(x, y, k) = sum;
-            }
-    });
-    Image out(width, height, c);
-    const ImageWriter put = out.writer();
-    tbb::parallel_for(0, height, [&](int y) {
-        for (int x = 0; x < width; ++x)
-            for (int k = 0; k < c; ++k) {
-                float sum = 0.0f;
-                for (std::size_t j = 0; j < down.weights[y].size(); ++j)
-                    sum += down.weights[y][j] * rows.at(x, down.first[y] + static_cast<int>(j), k);
-                put.at(x, y, k) = sum;
-            }
-    });
-    return out;
+    const Image rows = tentPass(map, tentAxis(map.width, width), true);
+    return tentPass(rows, tentAxis(map.height, height), false);
 }
 
 Result<Image> loadEnvironment(const std::string& path) {
