@@ -12,7 +12,6 @@
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QTest>
-#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -212,28 +211,26 @@ int execShard(QObject* test, int argc, char** argv) {
         all << name;
     }
     // Functions named on the command line ("name" or "name:row") run where the shard takes them;
-    // otherwise the shard's own functions are named.
-    QStringList named;
-    for (int i = 1; i < arguments.size(); ++i)
-        if (all.contains(arguments[i].section(':', 0, 0)))
-            named << arguments[i];
-    if (!named.isEmpty()) {
-        for (const QString& name : named)
-            if (!taken.contains(name.section(':', 0, 0)))
-                arguments.removeAll(name);
-    } else {
-        arguments << taken;
+    // without names, the shard's own run.
+    QStringList kept = {arguments.front()};
+    qsizetype named = 0, running = 0;
+    for (qsizetype i = 1; i < arguments.size(); ++i) {
+        const QString function = arguments[i].section(':', 0, 0);
+        const bool isFunction = all.contains(function);
+        named += isFunction ? 1 : 0;
+        if (!isFunction || taken.contains(function)) {
+            kept << arguments[i];
+            running += isFunction ? 1 : 0;
+        }
     }
-    const bool none = named.isEmpty()
-                          ? taken.isEmpty()
-                          : std::none_of(named.begin(), named.end(), [&](const QString& n) {
-                                return taken.contains(n.section(':', 0, 0));
-                            });
-    if (none) // no names would run them all
+    if (named == 0) {
+        kept << taken;
+        running = taken.size();
+    }
+    if (running == 0) // no names would run them all
         qFatal("shard %zu/%zu takes none of the %lld test functions%s", shard.index, shard.count,
-               static_cast<long long>(named.isEmpty() ? all.size() : named.size()),
-               named.isEmpty() ? "" : " named");
-    return QTest::qExec(test, arguments);
+               static_cast<long long>(named == 0 ? all.size() : named), named == 0 ? "" : " named");
+    return QTest::qExec(test, kept);
 }
 
 } // namespace px::faults
