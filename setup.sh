@@ -11,7 +11,7 @@ packages=(
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-svg-dev qt6-qpa-plugins
   libglm-dev libopenimageio-dev openimageio-tools
   nlohmann-json3-dev libcli11-dev libtbb-dev libbenchmark-dev
-  libplplot-dev libpng-dev libassimp-dev libkissfft-dev
+  libplplot-dev libpng-dev libassimp-dev libkissfft-dev libembree-dev
   desktop-file-utils appstream
   xvfb xauth fonts-dejavu-core
   libgl1-mesa-dri libegl1 libegl-dev libgles-dev mesa-utils glslang-tools
