@@ -240,10 +240,10 @@ int runBenchCommand(const BenchOptions& o) {
     if (!report)
         return fail(report.error().message);
 
-    if (o.out == "-") {
-        std::cout << benchCsv(*report);
-    } else if (Status s = writeTextFile(o.out, benchCsv(*report)); !s) {
-        return fail(s.error().message);
+    OutputBatch outputs; // the CSV and the plot, both or neither
+    if (o.out != "-") {
+        if (Status s = writeTextFile(o.out, benchCsv(*report)); !s)
+            return fail(s.error().message);
     }
     const std::string machine = machineName();
     if (!o.plot.empty()) {
@@ -255,6 +255,10 @@ int runBenchCommand(const BenchOptions& o) {
         if (Status s = writePlot(o, *report, what); !s)
             return fail(s.error().message);
     }
+    if (Status s = outputs.commit(); !s)
+        return fail(s.error().message);
+    if (o.out == "-")
+        std::cout << benchCsv(*report);
     if (!o.quiet) {
         std::ostream& out = o.out == "-" ? std::cerr : std::cout;
         out << "CPU: " << machine << " (times: one thread, fastest of " << o.repeats << ")\n";

@@ -2,12 +2,16 @@
 
 #include "Interrupt.h"
 #include "parallax/Version.h"
+#include "parallax/io/AtomicWrite.h"
 #include "parallax/io/Inputs.h"
-#include "parallax/io/OutputCheck.h"
 
+#include <cerrno>
+#include <cstdio>
+#include <fcntl.h>
 #include <filesystem>
 #include <iostream>
 #include <new>
+#include <unistd.h>
 #include <vector>
 
 namespace px::cli {
@@ -37,17 +41,40 @@ Status checkFileOptions(const CLI::App& command) {
                 inputs.push_back({name, value});
         }
     }
-    if (Status s = checkOutputs(outputs, inputs); !s)
-        return s;
-    for (const NamedPath& in : inputs) {
-        if (Status s = noteInput(in.path, in.option); !s)
-            return s;
+    return checkOutputs(outputs, inputs);
+}
+
+// Standard output is an output. A closed one (or standard error or input) is held by /dev/full
+// (/dev/null), so that no file the run opens becomes it, and every write to it fails as it must.
+bool holdClosedStandardFiles() {
+    bool outputClosed = false;
+    for (int fd : {STDIN_FILENO, STDOUT_FILENO, STDERR_FILENO}) {
+        if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF)
+            continue;
+        outputClosed = outputClosed || fd == STDOUT_FILENO;
+        const int held = ::open(fd == STDOUT_FILENO ? "/dev/full" : "/dev/null",
+                                fd == STDIN_FILENO ? O_RDONLY : O_WRONLY);
+        if (held >= 0 && held != fd) {
+            ::dup2(held, fd);
+            ::close(held);
+        }
     }
-    for (const NamedPath& out : outputs) {
-        if (Status s = planOutput(out.path, out.option); !s)
-            return s;
-    }
-    return success();
+    return outputClosed;
+}
+
+// The run's last check: what it wrote to standard output must have arrived.
+int finishStandardOutput(int status, bool closed) {
+    std::cout.flush();
+    errno = 0;
+    const bool flushed = std::fflush(stdout) == 0;
+    const int code = errno;
+    if (flushed && !std::ferror(stdout) && !std::cout.bad())
+        return status;
+    const std::string why = closed      ? std::string("it is closed")
+                            : code != 0 ? "writing failed (" + systemReason(code) + ")"
+                                        : std::string("writing failed");
+    std::cerr << "error: standard output: " << why << "; what the command wrote there is lost\n";
+    return status == 0 ? 1 : status;
 }
 
 // CLI11 reads integers with strtol's base 0, so "--seed 010" would be 8 and "0x10" 16: numbers
@@ -93,6 +120,7 @@ int run(int argc, char** argv) {
         Action action;
     };
     installInterruptHandlers();
+    const bool stdoutClosed = holdClosedStandardFiles();
     std::vector<Entry> entries;
     auto add = [&](Action (*registrar)(CLI::App&)) {
         const std::size_t before = app.get_subcommands({}).size();
@@ -127,7 +155,7 @@ int run(int argc, char** argv) {
         if (Status s = checkFileOptions(*entry.command); !s)
             return fail(s.error().message);
         try {
-            return entry.action();
+            return finishStandardOutput(entry.action(), stdoutClosed);
         } catch (const std::bad_alloc&) {
             return fail("out of memory: the input is larger than this machine can hold (no "
                         "output was written)");

@@ -3,8 +3,8 @@
 
 #include "Cli.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/io/AtomicWrite.h"
 #include "parallax/io/Inputs.h"
-#include "parallax/io/OutputGate.h"
 #include "parallax/material/MapKind.h"
 #include "parallax/material/MapPaths.h"
 #include "parallax/material/MaterialFile.h"
@@ -72,8 +72,8 @@ int runImport(const ImportOptions& o) {
         return fail(set.error().message);
     if (!o.name.empty())
         set->material.name = o.name;
-    std::string heightFile; // written here, removed again if the material cannot be
-    bool keepHeight = false;
+    OutputBatch outputs; // the material file and its derived height map, both or neither
+    std::string heightFile;
     if (set->heightMissing) {
         if (!o.deriveHeight) {
             for (const std::string& line : importSummary(*set))
@@ -86,7 +86,6 @@ int runImport(const ImportOptions& o) {
         if (std::filesystem::exists(heightFile, ec)) {
             if (!o.force)
                 return fail(heightFile + ": already exists; --force replaces it");
-            keepHeight = true; // replaced in place, never removed
         }
         if (Status s = deriveHeight(*set); !s)
             return fail(s.error().message);
@@ -98,11 +97,10 @@ int runImport(const ImportOptions& o) {
     }
     Material material = set->material;
     material.maps = relativeMapPaths(material.maps, o.out);
-    if (Status s = saveMaterial(material, o.out); !s) {
-        if (!heightFile.empty() && !keepHeight)
-            static_cast<void>(removeOwned(heightFile, Removal::Unfinished)); // the failure is said
+    if (Status s = saveMaterial(material, o.out); !s)
         return fail(s.error().message);
-    }
+    if (Status s = outputs.commit(); !s)
+        return fail(s.error().message);
     for (const std::string& line : importSummary(*set))
         std::cout << line << "\n";
     if (!heightFile.empty())

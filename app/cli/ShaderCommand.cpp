@@ -3,6 +3,7 @@
 #include "Cli.h"
 #include "CommonOptions.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/StagedSet.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/MaterialNames.h"
 #include "parallax/shader/ShaderGenerator.h"
@@ -66,32 +67,46 @@ Result<VariantKey> keyFrom(const ShaderOptions& o) {
 }
 
 // Each variant's fragment stage as VARIANT.frag; the vertex stages, shared by many variants (they
-// read only which outputs the fragment stage keeps), once each as VERTEX-KEY.vert.
+// read only which outputs the fragment stage keeps), once each as VERTEX-KEY.vert. Every file or
+// none: they are staged, then renamed into the folder (StagedSet.h).
 int dumpAll(const std::string& dir) {
+    std::filesystem::path into = std::filesystem::path(dir).lexically_normal();
+    if (into.filename().empty())
+        into = into.parent_path();
     std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
+    if (!into.parent_path().empty())
+        std::filesystem::create_directories(into.parent_path(), ec);
     if (ec)
         return fail(dir + ": cannot create the folder (" + ec.message() + ")");
-    int count = 0;
+    Result<StagedSet> stage = StagedSet::begin(into, into.filename().string());
+    if (!stage)
+        return fail(stage.error().message);
+    auto write = [&](const std::string& name, const std::string& text) {
+        Status s = writeTextFile(stage->pathFor(name), text);
+        if (!s) // named as the user will see it, not the stage
+            return fail((into / name).string() + ": " +
+                        s.error().message.substr(s.error().message.find(": ") + 2));
+        return 0;
+    };
+    StagedSet::Update update;
     std::set<std::string> vertexStages;
     for (const VariantKey& key : allVariants()) {
         Result<GeneratedProgram> program = generateProgram(key);
         if (!program)
             return fail(key.name() + ": " + program.error().message);
-        const std::filesystem::path folder(dir);
-        if (Status s =
-                writeTextFile((folder / (key.name() + ".frag")).string(), program->fragment.text);
-            !s)
-            return fail(s.error().message);
+        update.moves.push_back(key.name() + ".frag");
+        if (write(update.moves.back(), program->fragment.text) != 0)
+            return 1;
         const std::string vertex = program->vertexKey.name();
         if (vertexStages.insert(vertex).second) {
-            if (Status s =
-                    writeTextFile((folder / (vertex + ".vert")).string(), program->vertex.text);
-                !s)
-                return fail(s.error().message);
+            update.moves.push_back(vertex + ".vert");
+            if (write(update.moves.back(), program->vertex.text) != 0)
+                return 1;
         }
-        ++count;
     }
+    if (Result<std::vector<std::string>> s = stage->commit(update); !s)
+        return fail(s.error().message);
+    const std::size_t count = update.moves.size() - vertexStages.size();
     std::cout << "wrote " << count << " variants: " << count << " fragment and "
               << vertexStages.size() << " vertex shaders to " << dir << "\n";
     return 0;

@@ -8,6 +8,7 @@
 
 #include "FaultSupport.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/io/Temporaries.h"
 
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -471,15 +472,17 @@ void FaultReachTest::userFileNamedLikeALockKept_data() {
     QTest::addColumn<QByteArray>("bytes");
     QTest::newRow("export, notes")
         << QStringList{"export", "--height", "h.png", "--format", "gltf", "--out", "lockpkg"}
-        << ".lockpkg.lock" << QByteArray("the artist's notes\n");
+        << QString::fromStdString(px::temporaryName("lockpkg", "lock"))
+        << QByteArray("the artist's notes\n");
     QTest::newRow("turntable, digits but no newline")
         << QStringList{"render", "--height", "h.png", "--turntable", "2",
                        "--size", "16",       "--out", "lspin.png"}
-        << ".lspin-000.png.lock" << QByteArray("20261126");
+        << QString::fromStdString(px::temporaryName("lspin-000.png", "lock"))
+        << QByteArray("20261126");
 }
 
-// A writer's lock (.NAME.lock) is the project's own file only when it holds what a writer puts
-// there (a pid); a user's file of that name is refused, never truncated or removed.
+// A writer's lock (.px-lock-HASH, Temporaries.h) is the project's own file only when it holds what
+// a writer puts there (a pid); a user's file of that name is refused, never truncated or removed.
 void FaultReachTest::userFileNamedLikeALockKept() {
     QFETCH(QStringList, args);
     QFETCH(QString, lock);

@@ -161,27 +161,27 @@ void FaultSignalTest::killedRunsDebrisRemovedByTheNext_data() {
     QTest::addColumn<QString>("debris");
     QTest::newRow("sample") << QStringList{"sample", "bricks", "--size", "64", "--out", "out.png"}
                             << "write"
-                            << "^\\.out\\.png\\.tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}$";
+                            << "^\\.px-tmp-[0-9a-f]{16}-[0-9a-f]{16}$";
     QTest::newRow("export") << QStringList{"export", "--height", "h.png", "--format",
                                            "gltf",   "--out",    "fresh"}
                             << "export-commit"
-                            << "^\\.fresh\\.export-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
+                            << "^\\.px-stage-[0-9a-f]{16}-[0-9a-f]{16}/$";
     QTest::newRow("export --force, half updated")
         << QStringList{"export",   "--height", "h.png",   "--format", "godot",
                        "--invert", "--out",    "earlier", "--force"}
         << "export-update"
-        << "^\\.earlier\\.export-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
+        << "^earlier/\\.px-stage-[0-9a-f]{16}-[0-9a-f]{16}/$";
     const QStringList spin = {"render", "--height", "h.png", "--turntable", "3",
                               "--size", "16",       "--out", "spin.png"};
     QTest::newRow("render --turntable, a frame half written")
         << spin << "write"
-        << "^\\.spin-000\\.png\\.set-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
+        << "^\\.px-stage-[0-9a-f]{16}-[0-9a-f]{16}/$";
     QTest::newRow("render --turntable, every frame staged")
         << spin << "frames-commit"
-        << "^\\.spin-000\\.png\\.set-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
+        << "^\\.px-stage-[0-9a-f]{16}-[0-9a-f]{16}/$";
     QTest::newRow("render --turntable, half the frames moved")
         << spin << "frames-update"
-        << "^\\.spin-000\\.png\\.set-tmp[0-9]+-[0-9]+\\.[0-9a-f]{8}/$";
+        << "^\\.px-stage-[0-9a-f]{16}-[0-9a-f]{16}/$";
 }
 
 void FaultSignalTest::killedRunsDebrisRemovedByTheNext() {

@@ -101,8 +101,7 @@ int execShard(QObject* test, int argc, char** argv);
         const auto after_ = px::faults::snapshot(folder);                                          \
         (said) = run_.output;                                                                      \
         const bool named_ = run_.output.contains("error: ") && run_.output.contains(file) &&       \
-                            !run_.output.contains(                                                 \
-                                QRegularExpression("\\.tmp[0-9]+-|(export|set)-(tmp|old)[0-9]"));  \
+                            !run_.output.contains(QRegularExpression("\\.px-(tmp|stage)-"));       \
         const bool reason_ = run_.output.contains(QRegularExpression(reason));                     \
         px::faults::record(run_, run_.status == (rc) && named_ && reason_, run_.signal != 0,       \
                            px::faults::bytesLost(before_, after_));                                \

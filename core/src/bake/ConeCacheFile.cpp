@@ -74,7 +74,7 @@ void trim(const fs::path& dir, std::uint64_t limit) {
     for (const Entry& e : entries) {
         if (total <= limit)
             break;
-        if (removeOwned(e.path, Removal::CacheEntry))
+        if (removeOwned(e.path))
             total -= e.bytes;
     }
 }

@@ -78,7 +78,8 @@ Result<ExportFolder> ExportFolder::begin(const fs::path& requested, bool force) 
     Result<OutputLock> lock = OutputLock::take(target);
     if (!lock)
         return lock.error();
-    removeStaleTemporaries(target); // what a killed export left beside it (finishing a commit)
+    removeStaleTemporaries(target); // a killed export's stage beside it, or in it (StagedSet.h)
+    removeStaleTemporaries(target / target.filename());
 
     bool replace = false;
     std::vector<std::string> earlier;
@@ -104,7 +105,7 @@ Result<ExportFolder> ExportFolder::begin(const fs::path& requested, bool force) 
         if (Status s = noInputAmong(target, earlier); !s)
             return s.error();
     }
-    Result<StagedSet> stage = StagedSet::begin(target, "export-tmp");
+    Result<StagedSet> stage = StagedSet::begin(target, target.filename().string());
     if (!stage)
         return fileError(where(requested), "cannot create the export's working folder beside it (" +
                                                stage.error().message + ")");
@@ -137,40 +138,56 @@ Result<ExportFolder::Committed> ExportFolder::commit(std::string_view descriptio
 }
 
 Result<ExportFolder::Committed> ExportFolder::commitStaged(std::string_view description) {
-    std::string marker = "Written by Parallax Studio " + std::string(kVersion) + ": " +
-                         std::string(description) + "\n";
-    for (const std::string& file : m_files)
+    const std::string header = "Written by Parallax Studio " + std::string(kVersion) + ": " +
+                               std::string(description) + "\n";
+    // An update moves its manifest first, listing the earlier export's files too: whatever prefix
+    // of the renames a power cut leaves, the manifest names every file an export wrote there.
+    std::vector<std::string> listed = m_files;
+    for (const std::string& name : m_earlier) {
+        if (m_replace && !contains(listed, name))
+            listed.push_back(name);
+    }
+    std::string marker = header;
+    for (const std::string& file : listed)
         marker += file + "\n";
     if (Status s = writeTextFile(pathFor(std::string(kExportMarker)), marker); !s)
         return asTarget(s.error());
     if (!m_replace) {
-        testInterruptPoint("export-commit");
-        if (Status s = m_stage.commitAsFolder(m_target); !s)
+        StagedSet::Update update;
+        update.commitPoint = "export-commit";
+        if (Result<std::vector<std::string>> s = m_stage.commit(update); !s)
             return fileError(where(m_target),
                              "cannot move the export into place (" + s.error().message + ")");
         return Committed{m_files, {}};
     }
-    return updateInPlace();
+    return updateInPlace(header, listed.size() != m_files.size());
 }
 
-Result<ExportFolder::Committed> ExportFolder::updateInPlace() {
+Result<ExportFolder::Committed> ExportFolder::updateInPlace(const std::string& header,
+                                                            bool relist) {
     // Everything that can be checked is checked before the first file moves.
     if (::access(m_target.c_str(), W_OK | X_OK) != 0)
         return fileError(where(m_target), "cannot update the earlier export (" +
                                               systemReason(errno) + "); it is unchanged");
     StagedSet::Update update;
-    update.into = m_target;
-    update.moves = m_files;
-    update.moves.emplace_back(kExportMarker); // last: the manifest of what is there
+    update.moves.emplace_back(kExportMarker); // first: see commitStaged
+    update.moves.insert(update.moves.end(), m_files.begin(), m_files.end());
     for (const std::string& name : m_earlier) {
         if (!contains(m_files, name))
             update.removals.push_back(name);
     }
     update.commitPoint = "export-commit";
     update.updatePoint = "export-update";
-    Result<std::vector<std::string>> kept = m_stage.commitInto(update);
+    Result<std::vector<std::string>> kept = m_stage.commit(update);
     if (!kept)
         return kept.error();
+    if (relist) { // the manifest of what is there now
+        std::string marker = header;
+        for (const std::string& file : m_files)
+            marker += file + "\n";
+        if (Status s = writeTextFile((m_target / kExportMarker).string(), marker); !s)
+            return s.error();
+    }
     Committed result{m_files, {}};
     std::error_code ec;
     for (fs::directory_iterator it(m_target, ec), end; !ec && it != end; it.increment(ec)) {

@@ -11,8 +11,10 @@
 #include "parallax/material/SurfaceFactors.h"
 
 #include <array>
+#include <cctype>
 #include <cstring>
 #include <nlohmann/json.hpp>
+#include <string_view>
 
 namespace px::exporter {
 
@@ -99,13 +101,31 @@ Image specularTexture(const Image& specular, bool grey) {
     return out;
 }
 
+// A file name as a glTF URI (RFC 3986): bytes outside the unreserved set percent-encoded, so a
+// name of any bytes (an old archive's Latin-1) is a valid URI that loaders decode to the file.
+std::string uriOf(const std::string& name) {
+    static const char* hex = "0123456789ABCDEF";
+    std::string uri;
+    for (const char c : name) {
+        const auto b = static_cast<unsigned char>(c);
+        if (std::isalnum(b) != 0 || std::string_view("-._~").find(c) != std::string_view::npos) {
+            uri += c;
+        } else {
+            uri += '%';
+            uri += hex[b >> 4];
+            uri += hex[b & 15];
+        }
+    }
+    return uri;
+}
+
 } // namespace
 
 Status writeGltf(ExportJob& job) {
     const Material& m = job.material;
     Json images = Json::array(), textures = Json::array();
     auto texture = [&](const std::string& name) {
-        images.push_back({{"uri", name}, {"mimeType", "image/png"}});
+        images.push_back({{"uri", uriOf(name)}, {"mimeType", "image/png"}});
         textures.push_back({{"sampler", 0}, {"source", images.size() - 1}});
         return Json{{"index", textures.size() - 1}};
     };
@@ -221,7 +241,7 @@ Status writeGltf(ExportJob& job) {
               {"indices", 4},
               {"material", 0}}}}}}},
         {"materials", {material}},
-        {"buffers", {{{"uri", binName}, {"byteLength", plane.bytes.size()}}}},
+        {"buffers", {{{"uri", uriOf(binName)}, {"byteLength", plane.bytes.size()}}}},
         {"bufferViews", plane.bufferViews},
         {"accessors", plane.accessors},
     };
@@ -233,7 +253,9 @@ Status writeGltf(ExportJob& job) {
         gltf["images"] = images;
         gltf["textures"] = textures;
     }
-    return job.text(job.stem + ".gltf", gltf.dump(2) + "\n");
+    // Names are UTF-8 in glTF: bytes that are not are replaced (U+FFFD), never a failed dump.
+    return job.text(job.stem + ".gltf",
+                    gltf.dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
 }
 
 } // namespace px::exporter

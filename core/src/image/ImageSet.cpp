@@ -4,7 +4,6 @@
 #include "parallax/io/OutputGate.h"
 #include "parallax/io/OutputLock.h"
 #include "parallax/io/StagedSet.h"
-#include "parallax/io/Temporaries.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -41,12 +40,11 @@ Status writeImageSet(const std::vector<std::string>& files,
         return lock.error();
     std::vector<std::string> names;
     for (const std::string& file : files) {
-        removeStaleTemporaries(file);
         if (Status s = checkReplaceable(file); !s) // before any frame is made
             return s;
         names.push_back(fs::path(file).filename().string());
     }
-    Result<StagedSet> stage = StagedSet::begin(anchor, "set-tmp");
+    Result<StagedSet> stage = StagedSet::begin(folder, names.front());
     if (!stage)
         return stage.error();
     for (std::size_t i = 0; i < files.size(); ++i) {
@@ -62,12 +60,11 @@ Status writeImageSet(const std::vector<std::string>& files,
             return Error{message, s.error().kind, files[i]};
         }
     }
-    StagedSet::Update update;
-    update.into = folder;
+    StagedSet::Update update; // frame by frame: any prefix is whole frames
     update.moves = names;
     update.commitPoint = "frames-commit";
     update.updatePoint = "frames-update";
-    Result<std::vector<std::string>> committed = stage->commitInto(update);
+    Result<std::vector<std::string>> committed = stage->commit(update);
     if (!committed)
         return committed.error();
     return success();

@@ -5,10 +5,7 @@
 #include "parallax/io/Temporaries.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
-#include <cstdlib>
-#include <cstring>
 #include <fcntl.h>
 #include <limits>
 #include <sys/stat.h>
@@ -19,27 +16,29 @@ namespace px {
 
 namespace fs = std::filesystem;
 
+// A file written under its temporary name, waiting for its batch's commit.
+struct OutputBatch::Staged {
+    UniqueFd dir, file;
+    std::string temp, name, shown;
+    int handle = -1;
+};
+
 namespace {
 
-// PX_TEST_FAIL_WRITE_AT=N: the byte count after which writes fail with ENOSPC (-1: never).
-long long injectedFullDiskAt() {
-    const char* at = std::getenv("PX_TEST_FAIL_WRITE_AT");
-    return at != nullptr ? std::atoll(at) : -1;
-}
+thread_local std::vector<OutputBatch::Staged>* tBatch = nullptr;
 
 // Writes every byte or returns the errno that stopped it (0 on success). `offset`: bytes of the
-// file already written (for the injected full disk).
+// file already written (for the test hook's full disk).
 int writeAll(int fd, std::string_view bytes, long long offset = 0) {
-    const long long limit = injectedFullDiskAt() - offset;
-    const bool injected = injectedFullDiskAt() >= 0;
+    const long long failAt = testHooks().failWriteAt;
     std::size_t done = 0;
     while (done < bytes.size()) {
         std::size_t chunk = bytes.size() - done;
-        if (injected) {
-            if (static_cast<long long>(done) >= limit)
+        if (failAt >= 0) {
+            const long long left = failAt - offset - static_cast<long long>(done);
+            if (left <= 0)
                 return ENOSPC;
-            chunk = std::min<std::size_t>(
-                chunk, static_cast<std::size_t>(limit - static_cast<long long>(done)));
+            chunk = std::min<std::size_t>(chunk, static_cast<std::size_t>(left));
         }
         const ssize_t n = ::write(fd, bytes.data() + done, chunk);
         if (n < 0 && errno == EINTR)
@@ -53,11 +52,28 @@ int writeAll(int fd, std::string_view bytes, long long offset = 0) {
 
 Error createError(const std::string& path, int code) {
     const fs::path folder = fs::path(path).parent_path();
-    std::error_code ec;
-    if (code == ENOENT && !folder.empty() && !fs::is_directory(folder, ec))
+    if ((code == ENOENT || code == ENOTDIR) && !folder.empty())
         return fileError(path, "cannot create the file: the folder " + folder.string() +
                                    " does not exist");
     return fileError(path, "cannot create the file (" + systemReason(code) + ")");
+}
+
+void discard(OutputBatch::Staged& staged) {
+    discardTemporaryAt(staged.dir.get(), staged.temp);
+    releaseTemporary(staged.handle);
+}
+
+Status commitOne(OutputBatch::Staged& staged) {
+    testInterruptPoint("commit");
+    struct stat st {};
+    if (::fstat(staged.file.get(), &st) == 0)
+        noteCreated({static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)});
+    Status s =
+        replaceAt(staged.dir.get(), staged.temp, staged.dir.get(), staged.name, staged.shown);
+    if (!s)
+        discardTemporaryAt(staged.dir.get(), staged.temp);
+    releaseTemporary(staged.handle);
+    return s;
 }
 
 } // namespace
@@ -67,15 +83,7 @@ std::string systemReason(int code) {
 }
 
 fs::path temporaryPathFor(const fs::path& target) {
-    return temporarySibling(target, "tmp");
-}
-
-Status commitTemporary(const fs::path& temp, const fs::path& target) {
-    if (Status s = replaceWith(temp, target); !s) {
-        discardTemporary(temp);
-        return s;
-    }
-    return success();
+    return target.parent_path() / temporaryName(target.filename().string(), "tmp");
 }
 
 Status writeFileAtomically(const std::string& path, std::string_view contents) {
@@ -85,37 +93,75 @@ Status writeFileAtomically(const std::string& path, std::string_view contents) {
     if (!resolved)
         return resolved.error();
     const fs::path target = *resolved;
-    removeStaleTemporaries(target);
-    const fs::path temp = temporaryPathFor(target);
-    TemporaryGuard guard(temp);
-    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0)
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    OutputBatch::Staged staged;
+    staged.dir = UniqueFd(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+    if (staged.dir.get() < 0)
         return createError(path, errno);
-    holdTemporary(fd); // until renamed: no other run's sweep takes it meanwhile
+    staged.name = target.filename().string();
+    staged.shown = target != fs::path(path) ? path + " (a link to " + target.string() + ")" : path;
+    removeStaleTemporaries(staged.dir.get(), staged.name);
+    staged.temp = temporaryName(staged.name, "tmp");
+    staged.file = UniqueFd(::openat(staged.dir.get(), staged.temp.c_str(),
+                                    O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666));
+    if (staged.file.get() < 0)
+        return createError(path, errno);
+    staged.handle = registerTemporary(staged.dir.get(), staged.temp);
+    holdTemporary(staged.file.get()); // until renamed: no other run's sweep takes it meanwhile
     struct stat st {};
-    if (::lstat(target.c_str(), &st) == 0) // keep the replaced file's permissions
-        ::fchmod(fd, st.st_mode & 07777);
+    if (::fstatat(staged.dir.get(), staged.name.c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0)
+        ::fchmod(staged.file.get(), st.st_mode & 07777); // keep the replaced file's permissions
     const std::size_t half = contents.size() / 2;
-    int code = writeAll(fd, contents.substr(0, half));
+    int code = writeAll(staged.file.get(), contents.substr(0, half));
     testInterruptPoint("write");
     if (code == 0)
-        code = writeAll(fd, contents.substr(half), static_cast<long long>(half));
-    if (code == 0 && ::fsync(fd) != 0)
+        code = writeAll(staged.file.get(), contents.substr(half), static_cast<long long>(half));
+    if (code == 0 && ::fsync(staged.file.get()) != 0)
         code = errno;
     if (code != 0) {
-        ::close(fd);
-        discardTemporary(temp);
+        discard(staged);
         return fileError(path, "writing failed (" + systemReason(code) +
                                    "); the previous file, if any, is unchanged");
     }
-    testInterruptPoint("commit");
-    if (::fstat(fd, &st) == 0)
-        noteCreated({static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)});
-    Status committed = commitTemporary(temp, target);
-    ::close(fd);
-    if (!committed && target != fs::path(path)) // name the file as the user did
-        return fileError(path, "(a link to " + target.string() + "): " + committed.error().message);
-    return committed;
+    if (tBatch != nullptr) {
+        tBatch->push_back(std::move(staged));
+        return success();
+    }
+    return commitOne(staged);
+}
+
+OutputBatch::OutputBatch() {
+    if (tBatch == nullptr) {
+        m_own = new std::vector<Staged>;
+        tBatch = m_own;
+    }
+}
+
+OutputBatch::~OutputBatch() {
+    if (m_own == nullptr)
+        return;
+    tBatch = nullptr;
+    for (Staged& staged : *m_own)
+        discard(staged);
+    delete m_own;
+}
+
+Status OutputBatch::commit() {
+    if (m_own == nullptr)
+        return success(); // the outer batch commits
+    tBatch = nullptr;
+    for (Staged& staged : *m_own) { // nothing renamed while any target is refused
+        if (Status s = checkReplaceableAt(staged.dir.get(), staged.name, staged.shown); !s)
+            return s;
+    }
+    const InterruptDeferral deferral;
+    Status result = success();
+    for (Staged& staged : *m_own) {
+        if (Status s = commitOne(staged); !s && result)
+            result = s;
+    }
+    m_own->clear();
+    return result;
 }
 
 Status writeTextFile(const std::string& path, std::string_view contents) {

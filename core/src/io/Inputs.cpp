@@ -1,11 +1,12 @@
 #include "parallax/io/Inputs.h"
 
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/OutputGate.h"
 
 #include <algorithm>
 #include <cerrno>
 #include <fcntl.h>
-#include <mutex>
+#include <filesystem>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -20,36 +21,35 @@ struct Recorded {
     std::string text; // the input's role, or the planned output's option
 };
 
-struct Record {
-    std::mutex mutex;
-    int sessions = 0;
+} // namespace
+
+struct InputSession::Record {
     std::vector<Recorded> inputs;
     std::vector<Recorded> outputs;
     std::vector<FileIdentity> created;
 };
 
-Record& record() {
-    static Record r;
-    return r;
-}
+namespace {
+
+thread_local InputSession::Record* tCurrent = nullptr; // this thread's run
 
 FileIdentity identityFrom(const struct stat& st) {
     return {static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)};
 }
 
 Error sameAsInput(const std::string& output, std::string_view option, const InputEntry& input) {
+    // An input of the command line is named by its option; one reached another way, by how.
+    const bool named = input.role.starts_with("--");
     return fileError(output, std::string(option) + " names the same file as " +
-                                 describeInput(input) +
-                                 ", which this run reads: refusing to overwrite an input; choose "
-                                 "another output");
+                                 describeInput(input) + (named ? "" : ", which this run reads") +
+                                 ": refusing to overwrite an input; choose another output");
 }
 
 // Records an input; refuses one that is a planned output. Without a session, records nothing.
 Status recordInput(const FileIdentity& id, const std::string& path, std::string_view role) {
-    Record& r = record();
-    const std::lock_guard lock(r.mutex);
-    if (r.sessions == 0)
+    if (tCurrent == nullptr)
         return success();
+    InputSession::Record& r = *tCurrent;
     for (const Recorded& out : r.outputs) {
         if (out.identity == id)
             return sameAsInput(out.path, out.text, {path, std::string(role)});
@@ -190,9 +190,9 @@ Status noteInput(const std::string& path, std::string_view role) {
 }
 
 std::optional<InputEntry> inputWithIdentity(const FileIdentity& identity) {
-    Record& r = record();
-    const std::lock_guard lock(r.mutex);
-    for (const Recorded& in : r.inputs) {
+    if (tCurrent == nullptr)
+        return std::nullopt;
+    for (const Recorded& in : tCurrent->inputs) {
         if (in.identity == identity)
             return InputEntry{in.path, in.text};
     }
@@ -209,41 +209,94 @@ std::string describeInput(const InputEntry& entry) {
 
 Status planOutput(const std::string& path, std::string_view option) {
     struct stat st {};
-    if (path.empty() || ::stat(path.c_str(), &st) != 0)
+    if (tCurrent == nullptr || path.empty() || ::stat(path.c_str(), &st) != 0)
         return success(); // a file that is not there yet cannot be an input
     const FileIdentity id = identityFrom(st);
-    Record& r = record();
-    const std::lock_guard lock(r.mutex);
-    if (r.sessions == 0)
-        return success();
-    for (const Recorded& in : r.inputs) {
+    for (const Recorded& in : tCurrent->inputs) {
         if (in.identity == id)
             return sameAsInput(path, option, {in.path, in.text});
     }
-    r.outputs.push_back({id, path, std::string(option)});
+    tCurrent->outputs.push_back({id, path, std::string(option)});
+    return success();
+}
+
+bool sameFile(const std::string& a, const std::string& b) {
+    namespace fs = std::filesystem;
+    const std::optional<FileIdentity> ia = identityOf(a), ib = identityOf(b);
+    if (ia && ib)
+        return *ia == *ib; // hard links too
+    std::error_code ec;
+    const fs::path ca = fs::weakly_canonical(a, ec);
+    if (ec)
+        return false;
+    const fs::path cb = fs::weakly_canonical(b, ec);
+    return !ec && ca == cb;
+}
+
+namespace {
+
+Status checkOutput(const NamedPath& out) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(out.path, ec))
+        return fileError(out.path, out.option + " is a folder; give a file name");
+    const fs::path folder = fs::path(out.path).parent_path();
+    const fs::path dir = folder.empty() ? fs::path(".") : folder;
+    if (!fs::is_directory(dir, ec))
+        return fileError(out.path, "cannot create the file: the folder " + folder.string() +
+                                       " does not exist");
+    if (Result<fs::path> target = outputTarget(out.path); !target) // a FIFO, a dangling link
+        return target.error();
+    if (::access(dir.c_str(), W_OK | X_OK) != 0)
+        return fileError(out.path, "cannot create the file in " + dir.string() + " (" +
+                                       systemReason(errno) + ")");
+    return success();
+}
+
+} // namespace
+
+Status checkOutputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const NamedPath& out = outputs[i];
+        for (const NamedPath& in : inputs) {
+            if (sameFile(out.path, in.path))
+                return sameAsInput(out.path, out.option, {in.path, in.option});
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            if (sameFile(out.path, outputs[j].path))
+                return fileError(out.path, out.option + " names the same file as " +
+                                               outputs[j].option + "; give each output its own");
+        }
+        if (Status s = checkOutput(out); !s)
+            return s;
+    }
+    for (const NamedPath& in : inputs) {
+        if (Status s = noteInput(in.path, in.option); !s)
+            return s;
+    }
+    for (const NamedPath& out : outputs) {
+        if (Status s = planOutput(out.path, out.option); !s)
+            return s;
+    }
     return success();
 }
 
 void noteCreated(const FileIdentity& identity) {
-    Record& r = record();
-    const std::lock_guard lock(r.mutex);
-    if (r.sessions > 0)
-        r.created.push_back(identity);
+    if (tCurrent != nullptr)
+        tCurrent->created.push_back(identity);
 }
 
 InputSession::InputSession() {
-    Record& r = record();
-    const std::lock_guard lock(r.mutex);
-    ++r.sessions;
+    if (tCurrent == nullptr) {
+        m_own = new Record;
+        tCurrent = m_own;
+    }
 }
 
 InputSession::~InputSession() {
-    Record& r = record();
-    const std::lock_guard lock(r.mutex);
-    if (--r.sessions == 0) {
-        r.inputs.clear();
-        r.outputs.clear();
-        r.created.clear();
+    if (m_own != nullptr) {
+        tCurrent = nullptr;
+        delete m_own;
     }
 }
 

@@ -6,8 +6,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <dirent.h>
+#include <fcntl.h>
 #include <optional>
-#include <string>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -23,62 +23,67 @@ std::optional<InputEntry> inputAt(const struct stat& st) {
         {static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)});
 }
 
-Error isAnInput(const fs::path& path, const InputEntry& input) {
-    return fileError(path.string(), "is the same file as " + describeInput(input) +
-                                        ", which this run reads: refusing to overwrite or delete "
-                                        "an input; choose another output");
-}
-
-std::string linkTarget(const fs::path& link) {
-    std::error_code ec;
-    const fs::path to = fs::read_symlink(link, ec);
-    return ec ? std::string() : " (to " + to.string() + ")";
-}
-
-// Removes a tree of the project's own files, keeping any input found in it (and so its folders).
-// Returns whether everything went.
-bool removeTree(const fs::path& path) {
-    struct stat st {};
-    if (::lstat(path.c_str(), &st) != 0)
-        return errno == ENOENT;
-    if (inputAt(st))
-        return false;
-    if (!S_ISDIR(st.st_mode))
-        return ::unlink(path.c_str()) == 0 || errno == ENOENT;
-    bool all = true;
-    if (DIR* dir = ::opendir(path.c_str())) {
-        std::vector<std::string> names;
-        while (const dirent* entry = ::readdir(dir)) {
-            const std::string name = entry->d_name;
-            if (name != "." && name != "..")
-                names.push_back(name);
-        }
-        ::closedir(dir);
-        for (const std::string& name : names)
-            all = removeTree(path / name) && all;
-    }
-    return all && ::rmdir(path.c_str()) == 0;
+std::string linkTarget(int dir, const std::string& name) {
+    char to[4096];
+    const ssize_t n = ::readlinkat(dir, name.c_str(), to, sizeof to);
+    return n <= 0 ? std::string() : " (to " + std::string(to, static_cast<std::size_t>(n)) + ")";
 }
 
 } // namespace
 
-Status checkReplaceable(const fs::path& target) {
+UniqueFd& UniqueFd::operator=(UniqueFd&& other) noexcept {
+    if (this != &other) {
+        if (m_fd >= 0)
+            ::close(m_fd);
+        m_fd = other.release();
+    }
+    return *this;
+}
+
+UniqueFd::~UniqueFd() {
+    if (m_fd >= 0)
+        ::close(m_fd);
+}
+
+int UniqueFd::release() {
+    const int fd = m_fd;
+    m_fd = -1;
+    return fd;
+}
+
+Result<UniqueFd> openFolder(const fs::path& folder) {
+    const fs::path dir = folder.empty() ? fs::path(".") : folder;
+    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) {
+        if (errno == ENOENT || errno == ENOTDIR)
+            return fileError(dir.string(), "the folder does not exist");
+        return fileError(dir.string(), "cannot open the folder (" + systemReason(errno) + ")");
+    }
+    return UniqueFd(fd);
+}
+
+Status checkReplaceableAt(int dir, const std::string& name, const std::string& shown) {
     struct stat st {};
-    if (::lstat(target.c_str(), &st) != 0)
+    if (::fstatat(dir, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0)
         return success(); // absent (or unreachable: creating the file says why)
     if (S_ISDIR(st.st_mode))
-        return fileError(target.string(), "is a folder; give a file name");
+        return fileError(shown, "is a folder; give a file name");
     if (S_ISLNK(st.st_mode))
-        return fileError(target.string(),
-                         "is a symbolic link" + linkTarget(target) +
-                             ": refusing to replace it; write to the file it points to, or "
-                             "remove the link");
+        return fileError(shown, "is a symbolic link" + linkTarget(dir, name) +
+                                    ": refusing to replace it; write to the file it points to, "
+                                    "or remove the link");
     if (!S_ISREG(st.st_mode))
-        return fileError(target.string(), "is " + fileKind(st.st_mode) +
-                                              ", not a regular file: refusing to replace it");
+        return fileError(shown, "is " + fileKind(st.st_mode) +
+                                    ", not a regular file: refusing to replace it");
     if (const std::optional<InputEntry> input = inputAt(st))
-        return isAnInput(target, *input);
+        return fileError(shown, "is the same file as " + describeInput(*input) +
+                                    ", which this run reads: refusing to overwrite or delete an "
+                                    "input; choose another output");
     return success();
+}
+
+Status checkReplaceable(const fs::path& target) {
+    return checkReplaceableAt(AT_FDCWD, target.string(), target.string());
 }
 
 Result<fs::path> outputTarget(const fs::path& path) {
@@ -91,7 +96,7 @@ Result<fs::path> outputTarget(const fs::path& path) {
     std::error_code ec;
     const fs::path real = fs::canonical(path, ec);
     if (ec)
-        return fileError(path.string(), "is a symbolic link" + linkTarget(path) +
+        return fileError(path.string(), "is a symbolic link" + linkTarget(AT_FDCWD, path) +
                                             " to nothing that exists: refusing to create a file "
                                             "there; name the file itself");
     if (Status s = checkReplaceable(real); !s)
@@ -100,46 +105,72 @@ Result<fs::path> outputTarget(const fs::path& path) {
     return real;
 }
 
-Status replaceWith(const fs::path& from, const fs::path& to) {
-    if (Status s = checkReplaceable(to); !s)
-        return s;
-    if (::rename(from.c_str(), to.c_str()) != 0)
-        return fileError(to.string(), "cannot replace the file (" + systemReason(errno) + ")");
-    return success();
-}
-
-Status moveFolderInto(const fs::path& from, const fs::path& to) {
-    struct stat st {};
-    if (::lstat(to.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
-        return fileError(to.string(), "is " + fileKind(st.st_mode) + ", not a folder");
-    // rename() replaces only an empty folder, atomically.
-    if (::rename(from.c_str(), to.c_str()) != 0)
-        return fileError(to.string(),
-                         "cannot move the folder into place (" + systemReason(errno) + ")");
-    return success();
-}
-
-Status removeOwned(const fs::path& path, Removal why) {
-    struct stat st {};
-    if (::lstat(path.c_str(), &st) != 0)
-        return success();
-    if (const std::optional<InputEntry> input = inputAt(st))
-        return isAnInput(path, *input);
-    if (why == Removal::Leftover) {
-        if (!removeTree(path))
-            return fileError(path.string(), "could not be removed entirely");
+Status replaceAt(int fromDir, const std::string& from, int toDir, const std::string& to,
+                 const std::string& shown, bool folder) {
+    if (folder) {
+        // Never over anything: the target was absent when the stage was made beside it.
+        if (::renameat2(fromDir, from.c_str(), toDir, to.c_str(), RENAME_NOREPLACE) != 0)
+            return fileError(shown,
+                             "cannot move the folder into place (" + systemReason(errno) + ")");
         return success();
     }
-    if (!S_ISREG(st.st_mode))
-        return fileError(path.string(),
-                         "is " + fileKind(st.st_mode) + ", not a file the project wrote; kept");
-    if (::unlink(path.c_str()) != 0 && errno != ENOENT)
-        return fileError(path.string(), "cannot remove the file (" + systemReason(errno) + ")");
+    if (Status s = checkReplaceableAt(toDir, to, shown); !s)
+        return s;
+    if (::renameat(fromDir, from.c_str(), toDir, to.c_str()) != 0)
+        return fileError(shown, "cannot replace the file (" + systemReason(errno) + ")");
     return success();
+}
+
+Status removeOwnedAt(int dir, const std::string& name, const std::string& shown) {
+    struct stat st {};
+    if (::fstatat(dir, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0)
+        return success();
+    if (!S_ISREG(st.st_mode))
+        return fileError(shown,
+                         "is " + fileKind(st.st_mode) + ", not a file the project wrote; kept");
+    if (Status s = checkReplaceableAt(dir, name, shown); !s)
+        return s;
+    if (::unlinkat(dir, name.c_str(), 0) != 0 && errno != ENOENT)
+        return fileError(shown, "cannot remove the file (" + systemReason(errno) + ")");
+    return success();
+}
+
+Status removeOwned(const fs::path& path) {
+    return removeOwnedAt(AT_FDCWD, path.string(), path.string());
+}
+
+void discardTemporaryAt(int dir, const std::string& name) {
+    struct stat st {};
+    if (::fstatat(dir, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0)
+        return;
+    if (!S_ISDIR(st.st_mode)) {
+        if (!inputAt(st))
+            ::unlinkat(dir, name.c_str(), 0);
+        return;
+    }
+    const int fd = ::openat(dir, name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0)
+        return;
+    std::vector<std::string> names;
+    if (DIR* list = ::fdopendir(::dup(fd))) {
+        while (const dirent* e = ::readdir(list)) {
+            if (std::string_view(e->d_name) != "." && std::string_view(e->d_name) != "..")
+                names.emplace_back(e->d_name);
+        }
+        ::closedir(list);
+    }
+    for (const std::string& entry : names) {
+        struct stat in {};
+        if (::fstatat(fd, entry.c_str(), &in, AT_SYMLINK_NOFOLLOW) == 0 && !S_ISDIR(in.st_mode) &&
+            !inputAt(in))
+            ::unlinkat(fd, entry.c_str(), 0);
+    }
+    ::close(fd);
+    ::unlinkat(dir, name.c_str(), AT_REMOVEDIR);
 }
 
 void discardTemporary(const fs::path& path) {
-    removeTree(path);
+    discardTemporaryAt(AT_FDCWD, path.string());
 }
 
 } // namespace px

@@ -50,70 +50,65 @@ Result<OutputLock> OutputLock::take(const fs::path& requested) {
     fs::path target = requested;
     if (target.filename().empty()) // "out/" names "out"
         target = target.parent_path();
-    const fs::path path = target.parent_path() / ("." + target.filename().string() + ".lock");
+    Result<UniqueFd> dir = openFolder(target.parent_path());
+    if (!dir)
+        return dir.error();
+    const std::string name = temporaryName(target.filename().string(), "lock");
+    const std::string shown = (target.parent_path() / name).string();
     for (int attempt = 0; attempt < 100; ++attempt) {
-        const int fd =
-            ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
-        if (fd < 0)
-            return fileError(target.string(), "cannot take the writer's lock " + path.string() +
-                                                  " (" + systemReason(errno) + ")");
+        UniqueFd fd(::openat(dir->get(), name.c_str(),
+                             O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644));
+        if (fd.get() < 0)
+            return fileError(target.string(), "cannot take the writer's lock " + shown + " (" +
+                                                  systemReason(errno) + ")");
         struct stat held {};
-        if (::fstat(fd, &held) != 0 || !S_ISREG(held.st_mode)) {
-            ::close(fd);
-            return fileError(target.string(), "the writer's lock " + path.string() +
-                                                  " is not a regular file; remove it");
-        }
-        if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-            const std::string holder = holderOf(fd);
-            ::close(fd);
+        if (::fstat(fd.get(), &held) != 0 || !S_ISREG(held.st_mode))
             return fileError(target.string(),
-                             "another run (" + holder +
+                             "the writer's lock " + shown + " is not a regular file; remove it");
+        if (::flock(fd.get(), LOCK_EX | LOCK_NB) != 0)
+            return fileError(target.string(),
+                             "another run (" + holderOf(fd.get()) +
                                  ") is writing it now; nothing was changed: run again once it "
                                  "has finished");
-        }
         // The previous holder may have removed the file between our open and our lock: then
         // this lock guards nothing, and another run may already hold a new file's.
         struct stat now {};
-        if (::stat(path.c_str(), &now) != 0 || now.st_ino != held.st_ino ||
-            now.st_dev != held.st_dev) {
-            ::close(fd);
+        if (::fstatat(dir->get(), name.c_str(), &now, AT_SYMLINK_NOFOLLOW) != 0 ||
+            now.st_ino != held.st_ino || now.st_dev != held.st_dev)
             continue;
-        }
         const FileIdentity id{static_cast<std::uint64_t>(held.st_dev),
                               static_cast<std::uint64_t>(held.st_ino)};
-        if (!holdsALockOfOurs(fd, now) || inputWithIdentity(id)) {
-            ::close(fd);
+        if (!holdsALockOfOurs(fd.get(), now) || inputWithIdentity(id))
             return fileError(target.string(),
-                             "the writer's lock " + path.string() +
+                             "the writer's lock " + shown +
                                  " is a file that Parallax Studio did not write; refusing to "
                                  "replace it (rename it, or choose another output)");
-        }
         const std::string pid = std::to_string(::getpid()) + "\n";
-        if (::ftruncate(fd, 0) == 0) [[maybe_unused]]
-            const ssize_t n = ::pwrite(fd, pid.data(), pid.size(), 0);
+        if (::ftruncate(fd.get(), 0) == 0) [[maybe_unused]]
+            const ssize_t n = ::pwrite(fd.get(), pid.data(), pid.size(), 0);
         noteCreated(id);
         OutputLock lock;
-        lock.m_path = path;
-        lock.m_fd = fd;
-        lock.m_handle = registerTemporary(path);
+        lock.m_handle = registerTemporary(dir->get(), name);
+        lock.m_dir = std::move(*dir);
+        lock.m_fd = std::move(fd);
+        lock.m_name = name;
         return lock;
     }
-    return fileError(target.string(), "cannot take the writer's lock " + path.string() +
-                                          ": it keeps being replaced");
+    return fileError(target.string(),
+                     "cannot take the writer's lock " + shown + ": it keeps being replaced");
 }
 
 OutputLock::OutputLock(OutputLock&& other) noexcept
-    : m_path(std::move(other.m_path)), m_fd(other.m_fd), m_handle(other.m_handle) {
-    other.m_fd = -1;
+    : m_dir(std::move(other.m_dir)), m_fd(std::move(other.m_fd)), m_name(std::move(other.m_name)),
+      m_handle(other.m_handle) {
     other.m_handle = -1;
 }
 
 OutputLock::~OutputLock() {
-    if (m_fd < 0)
+    if (m_fd.get() < 0)
         return;
-    discardTemporary(m_path); // while still held: see the check after flock() above
     releaseTemporary(m_handle);
-    ::close(m_fd);
+    discardTemporaryAt(m_dir.get(), m_name); // while still held: see the check after flock()
 }
 
 } // namespace px

@@ -1,8 +1,7 @@
 #include "parallax/io/Temporaries.h"
 
 #include "parallax/io/Fnv1a.h"
-#include "parallax/io/OutputGate.h"
-#include "parallax/io/StagedSet.h"
+#include "parallax/io/Inputs.h"
 
 #include <array>
 #include <atomic>
@@ -10,16 +9,14 @@
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <ctime>
+#include <dirent.h>
 #include <fcntl.h>
 #include <optional>
-#include <string>
 #include <string_view>
 #include <sys/file.h>
+#include <sys/random.h>
 #include <sys/stat.h>
-#include <system_error>
 #include <unistd.h>
 #include <vector>
 
@@ -34,98 +31,136 @@ enum SlotState : int { kFree = 0, kFilling = 1, kReady = 2 };
 struct Slot {
     std::atomic<int> state{kFree};
     std::atomic<std::uint64_t> order{0};
-    std::array<char, 4096> path{};
+    int dir = -1, self = -1;
+    std::array<char, 64> name{};
 };
 constexpr int kSlots = 128;
 std::array<Slot, kSlots> gSlots;
 std::atomic<std::uint64_t> gOrder{1};
 std::atomic<int> gDeferDepth{0};
 std::atomic<int> gDeferredSignal{0};
+TestHooks gHooks;
 
-constexpr std::array<std::string_view, 4> kRoles{"tmp", "export-tmp", "set-tmp", "export-old"};
-
-// A leftover's owner as its name gives it: ".NAME.<role><pid>-<n>[.<host>]".
-struct Owner {
-    long pid = -1;
-    std::string host; // empty: a name of an older version, without one
-};
-
-bool digits(std::string_view s) {
-    return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
+std::string hex16(std::uint64_t value) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+    return text;
 }
 
-// The owner of `entry` if it is a temporary of `name`.
-std::optional<Owner> temporaryOwner(const std::string& entry, const std::string& name) {
-    const std::string prefix = "." + name + ".";
-    if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0)
-        return std::nullopt;
-    const std::string_view rest = std::string_view(entry).substr(prefix.size());
-    // Older versions staged a turntable's frames as ".NAME.tmpPID-N.png".
-    const std::string extension = fs::path(name).extension().string();
-    for (std::string_view role : kRoles) {
-        if (rest.substr(0, role.size()) != role)
-            continue;
-        const std::string_view tail = rest.substr(role.size());
-        const std::size_t dash = tail.find('-');
-        if (dash == std::string_view::npos)
-            continue;
-        const std::string_view pid = tail.substr(0, dash);
-        std::string_view n = tail.substr(dash + 1), host;
-        if (const std::size_t dot = n.find('.'); dot != std::string_view::npos) {
-            host = n.substr(dot + 1);
-            n = n.substr(0, dot);
+std::string nameHash(const std::string& name) {
+    return hex16(fnv1a(name.data(), name.size()));
+}
+
+// Unlinks every entry of the folder open as `fd` (a stage holds only files). Async-signal-safe.
+void emptyFolder(int fd) noexcept {
+    alignas(8) char buffer[4096];
+    for (bool removed = true; removed;) {
+        removed = false;
+        ::lseek(fd, 0, SEEK_SET);
+        const ssize_t n = ::getdents64(fd, buffer, sizeof buffer);
+        for (ssize_t at = 0; at < n;) {
+            const auto* entry = reinterpret_cast<const struct dirent64*>(buffer + at);
+            const char* name = entry->d_name;
+            if (std::strcmp(name, ".") != 0 && std::strcmp(name, "..") != 0)
+                removed = ::unlinkat(fd, name, 0) == 0 || removed;
+            at += entry->d_reclen;
         }
-        if (!digits(pid) || !digits(n) || pid.size() >= 10)
-            continue;
-        const bool hex = host.size() == 8 &&
-                         host.find_first_not_of("0123456789abcdef") == std::string_view::npos;
-        if (!host.empty() && !hex && "." + std::string(host) != extension)
-            continue;
-        return Owner{std::stol(std::string(pid)), hex ? std::string(host) : std::string()};
     }
-    return std::nullopt;
 }
 
-bool running(long pid) {
-    return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH;
+bool sameInode(const struct stat& a, const struct stat& b) {
+    return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
 }
 
-// Whether a writer, anywhere, holds its lock on `entry` (an error counts as held: not provably
-// dead). A symbolic link is never one of ours.
-bool lockHeld(const fs::path& entry) {
-    const int fd = ::open(entry.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOFOLLOW);
-    if (fd < 0)
-        return true;
-    const bool held = ::flock(fd, LOCK_EX | LOCK_NB) != 0;
-    ::close(fd);
-    return held;
+bool isInput(const struct stat& st) {
+    return inputWithIdentity(
+               {static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)})
+        .has_value();
 }
 
-// Seconds since `entry` last changed.
-double age(const fs::path& entry) {
+// Why a leftover entry `st` is not what a writer makes ("" when it is a regular file of ours).
+std::string notOurs(const struct stat& st) {
+    if (!S_ISREG(st.st_mode))
+        return fileKind(st.st_mode) + ", which no writer makes";
+    if (st.st_uid != ::geteuid())
+        return "a file of another user";
+    if (st.st_nlink != 1)
+        return "a file with other links";
+    if (isInput(st))
+        return "an input of this run";
+    return {};
+}
+
+void leaveAlone(const std::string& name, const std::string& why) {
+    std::fprintf(stderr, "note: %s: left alone, not provably a dead run's leftover (%s)\n",
+                 name.c_str(), why.c_str());
+}
+
+// Removes the leftover `name` in `dir` of `kind` if it is provably a dead writer's (see the
+// header): its lock free, its owner us, nothing in it that a writer does not make.
+bool removeIfDead(int dir, const std::string& name, bool stage) {
     struct stat st {};
-    if (::lstat(entry.c_str(), &st) != 0)
-        return 0.0;
-    return std::difftime(std::time(nullptr), st.st_mtime);
-}
-
-constexpr double kBeyondDoubtSeconds = 3600.0;
-
-bool provablyDead(const fs::path& entry, const Owner& owner) {
-    if (lockHeld(entry))
+    if (::fstatat(dir, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0)
         return false;
-    if (owner.host == hostToken())
-        return owner.pid != ::getpid() && !running(owner.pid);
-    return age(entry) > kBeyondDoubtSeconds;
+    if (stage != S_ISDIR(st.st_mode) || (stage && st.st_uid != ::geteuid())) {
+        leaveAlone(name, stage ? notOurs(st) : fileKind(st.st_mode));
+        return false;
+    }
+    if (!stage && !notOurs(st).empty()) {
+        leaveAlone(name, notOurs(st));
+        return false;
+    }
+    const int flags = O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | (stage ? O_DIRECTORY : 0);
+    const int fd = ::openat(dir, name.c_str(), flags);
+    if (fd < 0)
+        return false;
+    struct stat opened {};
+    bool dead = ::fstat(fd, &opened) == 0 && sameInode(st, opened) &&
+                ::flock(fd, LOCK_EX | LOCK_NB) == 0; // a live writer holds it shared
+    if (dead && stage) {
+        // Every entry must be one a writer makes, checked through the opened folder: a link or a
+        // folder swapped in can only make this leave the stage alone.
+        if (DIR* list = ::fdopendir(::dup(fd))) {
+            std::vector<std::string> names;
+            while (const dirent* e = ::readdir(list)) {
+                if (std::strcmp(e->d_name, ".") != 0 && std::strcmp(e->d_name, "..") != 0)
+                    names.emplace_back(e->d_name);
+            }
+            ::closedir(list);
+            for (const std::string& entry : names) {
+                struct stat in {};
+                if (::fstatat(fd, entry.c_str(), &in, AT_SYMLINK_NOFOLLOW) != 0)
+                    continue;
+                if (const std::string why = notOurs(in); !why.empty()) {
+                    leaveAlone(name, "it holds " + entry + ", " + why);
+                    dead = false;
+                    break;
+                }
+            }
+        } else {
+            dead = false;
+        }
+        if (dead)
+            emptyFolder(fd);
+    }
+    struct stat now {};
+    if (dead && ::fstatat(dir, name.c_str(), &now, AT_SYMLINK_NOFOLLOW) == 0 && sameInode(now, st))
+        dead = ::unlinkat(dir, name.c_str(), stage ? AT_REMOVEDIR : 0) == 0;
+    ::close(fd);
+    return dead;
 }
 
 } // namespace
 
-fs::path temporarySibling(const fs::path& target, std::string_view role) {
-    static std::atomic<unsigned> counter{0};
-    return target.parent_path() /
-           ("." + target.filename().string() + "." + std::string(role) +
-            std::to_string(::getpid()) + "-" + std::to_string(counter++) + "." + hostToken());
+std::string temporaryName(const std::string& name, const char* kind) {
+    if (std::string_view(kind) == "lock")
+        return ".px-lock-" + nameHash(name);
+    std::uint64_t random = 0;
+    if (::getrandom(&random, sizeof random, 0) != static_cast<ssize_t>(sizeof random)) {
+        static std::atomic<std::uint64_t> counter{0};
+        random = (static_cast<std::uint64_t>(::getpid()) << 32) ^ counter++;
+    }
+    return std::string(".px-") + kind + "-" + nameHash(name) + "-" + hex16(random);
 }
 
 void holdTemporary(int fd) {
@@ -133,36 +168,16 @@ void holdTemporary(int fd) {
     }
 }
 
-const std::string& hostToken() {
-    static const std::string token = [] {
-        std::string id;
-        if (const int fd = ::open("/proc/sys/kernel/random/boot_id", O_RDONLY | O_CLOEXEC);
-            fd >= 0) {
-            char text[64] = {};
-            const ssize_t n = ::read(fd, text, sizeof text);
-            id.assign(text, n > 0 ? static_cast<std::size_t>(n) : 0);
-            ::close(fd);
-        }
-        char ns[64] = {};
-        const ssize_t n = ::readlink("/proc/self/ns/pid", ns, sizeof ns);
-        id.append(ns, n > 0 ? static_cast<std::size_t>(n) : 0);
-        const std::uint64_t h = fnv1a(id.data(), id.size());
-        char hex[9];
-        std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(h ^ (h >> 32)));
-        return std::string(hex);
-    }();
-    return token;
-}
-
-int registerTemporary(const fs::path& path) {
-    const std::string text = path.string();
-    if (text.size() >= gSlots[0].path.size())
+int registerTemporary(int dir, const std::string& name, int self) {
+    if (dir < 0 || name.size() >= gSlots[0].name.size())
         return -1;
     for (int i = 0; i < kSlots; ++i) {
         int expected = kFree;
         if (!gSlots[i].state.compare_exchange_strong(expected, kFilling))
             continue;
-        std::memcpy(gSlots[i].path.data(), text.c_str(), text.size() + 1);
+        std::memcpy(gSlots[i].name.data(), name.c_str(), name.size() + 1);
+        gSlots[i].dir = dir;
+        gSlots[i].self = self;
         gSlots[i].order.store(gOrder.fetch_add(1));
         gSlots[i].state.store(kReady);
         return i;
@@ -176,8 +191,7 @@ void releaseTemporary(int handle) {
 }
 
 void removeTemporariesNow() noexcept {
-    // Newest first: the files of a staging folder were registered after the folder.
-    std::uint64_t below = UINT64_MAX;
+    std::uint64_t below = UINT64_MAX; // newest first
     for (;;) {
         int newest = -1;
         std::uint64_t best = 0;
@@ -191,11 +205,44 @@ void removeTemporariesNow() noexcept {
         if (newest < 0)
             return;
         below = best;
-        const char* path = gSlots[newest].path.data();
-        // A folder: Linux reports EISDIR, POSIX allows EPERM.
-        if (::unlink(path) != 0 && (errno == EISDIR || errno == EPERM))
-            ::rmdir(path);
+        const Slot& slot = gSlots[newest];
+        if (slot.self >= 0)
+            emptyFolder(slot.self);
+        ::unlinkat(slot.dir, slot.name.data(), slot.self >= 0 ? AT_REMOVEDIR : 0);
     }
+}
+
+int removeStaleTemporaries(int dir, const std::string& name) {
+    const std::string hash = nameHash(name);
+    std::vector<std::pair<std::string, bool>> found; // name, stage
+    if (DIR* list = ::fdopendir(::dup(dir))) {
+        ::rewinddir(list);
+        while (const dirent* e = ::readdir(list)) {
+            const std::string_view entry(e->d_name);
+            for (const bool stage : {false, true}) {
+                const std::string prefix = std::string(".px-") + (stage ? "stage-" : "tmp-") + hash;
+                if (entry.size() == prefix.size() + 17 && entry.starts_with(prefix + "-") &&
+                    entry.find_first_not_of("0123456789abcdef", prefix.size() + 1) ==
+                        std::string_view::npos)
+                    found.emplace_back(entry, stage);
+            }
+        }
+        ::closedir(list);
+    }
+    int removed = 0;
+    for (const auto& [entry, stage] : found)
+        removed += removeIfDead(dir, entry, stage) ? 1 : 0;
+    return removed;
+}
+
+int removeStaleTemporaries(const fs::path& target) {
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dir < 0)
+        return 0;
+    const int removed = removeStaleTemporaries(dir, target.filename().string());
+    ::close(dir);
+    return removed;
 }
 
 bool deferInterrupt(int signal) noexcept {
@@ -216,43 +263,29 @@ InterruptDeferral::~InterruptDeferral() {
     }
 }
 
-void testInterruptPoint(const char* point) {
-    static std::atomic<bool> fired{false};
-    const char* spec = std::getenv("PX_TEST_RAISE"); // read each time: a forked test sets it
-    if (spec == nullptr || fired.load())
-        return;
-    const std::string_view text(spec);
-    const std::size_t colon = text.find(':');
-    if (colon == std::string_view::npos || text.substr(colon + 1) != point)
-        return;
-    const std::string_view name = text.substr(0, colon);
-    const int signal = name == "TERM"   ? SIGTERM
-                       : name == "KILL" ? SIGKILL
-                       : name == "STOP" ? SIGSTOP
-                       : name == "HUP"  ? SIGHUP
-                                        : SIGINT;
-    fired.store(true); // once
-    std::raise(signal);
+void setTestHooks(const TestHooks& hooks) {
+    gHooks = hooks;
 }
 
-int removeStaleTemporaries(const fs::path& target) {
-    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    const std::string name = target.filename().string();
-    if (name.empty())
-        return 0;
-    std::vector<fs::path> dead;
-    std::error_code ec;
-    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-        const std::optional<Owner> owner = temporaryOwner(it->path().filename().string(), name);
-        if (owner && provablyDead(it->path(), *owner))
-            dead.push_back(it->path());
-    }
-    int removed = 0;
-    for (const fs::path& entry : dead) {
-        if (finishCommittedStage(entry) || removeOwned(entry, Removal::Leftover))
-            ++removed;
-    }
-    return removed;
+const TestHooks& testHooks() {
+    return gHooks;
+}
+
+void testInterruptPoint(const char* point) {
+    if (gHooks.reached != nullptr && point != nullptr && *point != '\0')
+        gHooks.reached(point);
+}
+
+TemporaryGuard::TemporaryGuard(const fs::path& path) {
+    const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+    m_dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    m_handle = registerTemporary(m_dir, path.filename().string());
+}
+
+TemporaryGuard::~TemporaryGuard() {
+    releaseTemporary(m_handle);
+    if (m_dir >= 0)
+        ::close(m_dir);
 }
 
 } // namespace px

@@ -2,7 +2,6 @@
 target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/AtomicWrite.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Inputs.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/OutputCheck.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputGate.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputLock.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ShortestDecimal.cpp

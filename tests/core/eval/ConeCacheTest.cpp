@@ -4,6 +4,7 @@
 // when the cache is full, and files it did not name are never touched.
 
 #include "parallax/eval/Recommendation.h"
+#include "parallax/io/Temporaries.h"
 #include "parallax/sample/ProceduralMaps.h"
 
 #include <QTemporaryDir>
@@ -167,8 +168,10 @@ private slots:
         sizes.reserve(before.size());
         for (const fs::path& f : before)
             sizes.push_back(fs::file_size(f));
-        qputenv("PX_TEST_FAIL_WRITE_AT", "1000");
-        const auto restore = qScopeGuard([] { qunsetenv("PX_TEST_FAIL_WRITE_AT"); });
+        px::TestHooks full1000;
+        full1000.failWriteAt = 1000; // every cache write fails as on a full disk
+        px::setTestHooks(full1000);
+        const auto restore = qScopeGuard([] { px::setTestHooks({}); });
         clearRecommendationCache();
         const HeightField other = makeProceduralMap(ProceduralMap::Stones, 48, 40, 5);
         Result<Recommendation> full = recommend(configFor(other, cache.string()));
@@ -178,7 +181,7 @@ private slots:
         for (std::size_t i = 0; i < before.size(); ++i)
             QCOMPARE(fs::file_size(before[i]), sizes[i]);
         clearRecommendationCache();
-        qunsetenv("PX_TEST_FAIL_WRITE_AT");
+        px::setTestHooks({});
         Result<Recommendation> plain = recommend(configFor(other, std::string()));
         QVERIFY(plain);
         QVERIFY(sameAnswer(*full, *plain));

@@ -1,9 +1,8 @@
 // Outputs checked before any work: never an input (same path, another spelling, a hard link, a
 // symbolic link), never a folder, never in a missing folder.
 
-#include "parallax/io/OutputCheck.h"
-
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/io/Inputs.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

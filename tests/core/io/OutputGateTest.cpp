@@ -191,16 +191,18 @@ void OutputGateTest::removalsKeepWhatIsNotTheCallers() {
     QVERIFY(InputFile::open(path("h.png")).ok());
     QVERIFY(::mkfifo(path("pipe.png").c_str(), 0644) == 0);
     QVERIFY(writeFileAtomically(path("old.png"), "an earlier export's").ok());
-    QVERIFY(!removeOwned(path("hard.png"), Removal::EarlierExport).ok()); // an input
-    QVERIFY(!removeOwned(path("pipe.png"), Removal::EarlierExport).ok()); // not a file we wrote
-    QVERIFY(!removeOwned(path("link.png"), Removal::CacheEntry).ok());
-    QVERIFY(removeOwned(path("old.png"), Removal::EarlierExport).ok());
+    QVERIFY(!removeOwned(path("hard.png")).ok()); // an input
+    QVERIFY(!removeOwned(path("pipe.png")).ok()); // not a file we wrote
+    QVERIFY(!removeOwned(path("link.png")).ok());
+    QVERIFY(removeOwned(path("old.png")).ok());
     QVERIFY(!fs::exists(path("old.png")));
-    // A leftover tree holding an input keeps the input (and so its folder).
+    // A folder is never removed as a file; a stage of this run's, discarded, keeps any input in
+    // it (and so itself).
     fs::create_directory(path("stage"));
     fs::create_hard_link(path("h.png"), path("stage/h.png"));
     QVERIFY(writeFileAtomically(path("stage/new.png"), "new").ok());
-    QVERIFY(!removeOwned(path("stage"), Removal::Leftover).ok());
+    QVERIFY(!removeOwned(path("stage")).ok());
+    discardTemporary(path("stage"));
     QVERIFY(fs::exists(path("stage/h.png")));
     QVERIFY(!fs::exists(path("stage/new.png")));
     QCOMPARE(readTextFile(path("h.png"), false).value(), std::string("height"));

@@ -1,7 +1,7 @@
 // Sets of files written as one: a stage moved into place as a folder, or its files moved among
-// others after a journal; a refusal before the first move changes nothing; a run killed half-way
-// through the moves is finished by the next run's sweep, removing only the files it listed while
-// they are still the same; one writer at a time (OutputLock).
+// others; a refusal before the first move changes nothing; a run killed half-way through the moves
+// leaves whole files and a stage that the next run removes, obeying nothing in it; one writer at a
+// time (OutputLock).
 
 #include "parallax/io/StagedSet.h"
 
@@ -15,6 +15,7 @@
 #include <QtTest>
 #include <csignal>
 #include <cstdlib>
+#include <string_view>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -26,12 +27,11 @@ class StagedSetTest : public QObject {
 
 private slots:
     void init();
-    void cleanup() { ::unsetenv("PX_TEST_RAISE"); }
+    void cleanup() { setTestHooks({}); }
     void newFolderMovedIntoPlace();
     void filesMovedAmongOthers();
     void inputAmongTheTargetsRefusedBeforeAnyMove();
-    void killedHalfWayIsFinishedByTheNextRun();
-    void journalRemovesOnlyTheSameFiles();
+    void killedHalfWayLeavesWholeFiles();
     void oneWriterAtATime();
 
 private:
@@ -56,10 +56,10 @@ void StagedSetTest::init() {
 }
 
 void StagedSetTest::newFolderMovedIntoPlace() {
-    Result<StagedSet> set = StagedSet::begin(path("out"), "export-tmp");
-    QVERIFY(set.ok());
+    Result<StagedSet> set = StagedSet::begin(path("out"), "out");
+    QVERIFY(set.ok() && set->fresh());
     QVERIFY(writeFileAtomically(set->pathFor("a.txt"), "a").ok());
-    QVERIFY(set->commitAsFolder(path("out")).ok());
+    QVERIFY(set->commit({}).ok());
     QCOMPARE(read("out/a.txt"), std::string("a"));
     QCOMPARE(hidden(), QStringList());
 }
@@ -69,15 +69,14 @@ void StagedSetTest::filesMovedAmongOthers() {
     QVERIFY(writeFileAtomically(path("gone.txt"), "listed before").ok());
     QVERIFY(writeFileAtomically(path("mine.txt"), "the user's").ok());
     {
-        Result<StagedSet> set = StagedSet::begin(path("f-0.txt"), "set-tmp");
-        QVERIFY(set.ok());
+        Result<StagedSet> set = StagedSet::begin(m_dir->path().toStdString(), "f-0.txt");
+        QVERIFY(set.ok() && !set->fresh());
         for (const char* name : {"f-0.txt", "f-1.txt"})
             QVERIFY(writeFileAtomically(set->pathFor(name), std::string("new ") + name).ok());
         StagedSet::Update update;
-        update.into = m_dir->path().toStdString();
         update.moves = {"f-0.txt", "f-1.txt"};
         update.removals = {"gone.txt", "absent.txt"};
-        QVERIFY(set->commitInto(update).ok());
+        QVERIFY(set->commit(update).ok());
     }
     QCOMPARE(read("f-0.txt"), std::string("new f-0.txt"));
     QCOMPARE(read("f-1.txt"), std::string("new f-1.txt"));
@@ -93,14 +92,13 @@ void StagedSetTest::inputAmongTheTargetsRefusedBeforeAnyMove() {
     const InputSession session; // after: files this run wrote itself are never inputs
     QVERIFY(InputFile::open(path("input.txt")).ok());
     {
-        Result<StagedSet> set = StagedSet::begin(path("f-0.txt"), "set-tmp");
+        Result<StagedSet> set = StagedSet::begin(m_dir->path().toStdString(), "f-0.txt");
         QVERIFY(set.ok());
         for (const char* name : {"f-0.txt", "f-1.txt"})
             QVERIFY(writeFileAtomically(set->pathFor(name), "new").ok());
         StagedSet::Update update;
-        update.into = m_dir->path().toStdString();
         update.moves = {"f-0.txt", "f-1.txt"};
-        const Result<std::vector<std::string>> done = set->commitInto(update);
+        const Result<std::vector<std::string>> done = set->commit(update);
         QVERIFY(!done.ok());
         QVERIFY2(done.error().message.find("f-1.txt: is the same file as") != std::string::npos,
                  done.error().message.c_str());
@@ -111,9 +109,9 @@ void StagedSetTest::inputAmongTheTargetsRefusedBeforeAnyMove() {
 }
 
 // A child writes a set of four frames and is killed (SIGKILL, the test hook) after two moves:
-// the folder holds a mix and the stage with its journal; the next write on the set's name
-// finishes the moves and removes the stage.
-void StagedSetTest::killedHalfWayIsFinishedByTheNextRun() {
+// every frame is whole, old or new, and the stage is left; the next run removes the stage as a
+// dead writer's (nothing in it is obeyed) and writes the set whole.
+void StagedSetTest::killedHalfWayLeavesWholeFiles() {
     const std::vector<std::string> files = numberedFiles(path("t.png"), 4);
     const auto frame = [](float value) {
         return [value](int i) {
@@ -130,20 +128,18 @@ void StagedSetTest::killedHalfWayIsFinishedByTheNextRun() {
         old.push_back(readTextFile(f, false).value());
     const pid_t child = ::fork();
     if (child == 0) {
-        ::setenv("PX_TEST_RAISE", "KILL:frames-update", 1);
+        TestHooks hooks;
+        hooks.reached = [](const char* point) {
+            if (std::string_view(point) == "frames-update")
+                std::raise(SIGKILL);
+        };
+        setTestHooks(hooks);
         static_cast<void>(writeImageSet(files, frame(0.5f), {}));
         ::_exit(0); // not reached
     }
     int status = 0;
     QCOMPARE(::waitpid(child, &status, 0), child);
     QVERIFY(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
-    int changed = 0;
-    for (std::size_t i = 0; i < files.size(); ++i)
-        changed += readTextFile(files[i], false).value() != old[i];
-    QCOMPARE(changed, 2); // half moved: a mix, until the next run
-    QVERIFY(hidden().filter(QRegularExpression("^\\.t-000\\.png\\.set-tmp")).size() == 1);
-
-    QCOMPARE(removeStaleTemporaries(files.front()), 1);
     std::vector<std::string> expected;
     {
         QTemporaryDir clean;
@@ -153,67 +149,43 @@ void StagedSetTest::killedHalfWayIsFinishedByTheNextRun() {
         for (const std::string& f : reference)
             expected.push_back(readTextFile(f, false).value());
     }
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        const std::string now = readTextFile(files[i], false).value();
+        QVERIFY2(now == (i < 2 ? expected[i] : old[i]), files[i].c_str()); // whole, in order
+    }
+    QCOMPARE(hidden().filter(QRegularExpression("^\\.px-stage-")).size(), 1);
+    QVERIFY(writeImageSet(files, frame(0.5f), {}).ok());
     for (std::size_t i = 0; i < files.size(); ++i)
         QVERIFY2(readTextFile(files[i], false).value() == expected[i], files[i].c_str());
-    QVERIFY2(hidden().filter(QRegularExpression("set-tmp")).isEmpty(),
-             qPrintable(hidden().join(' ')));
-}
-
-// A journal lists the earlier files it removes with their identity: one replaced meanwhile by
-// someone else's file of the same name is kept.
-void StagedSetTest::journalRemovesOnlyTheSameFiles() {
-    QVERIFY(writeFileAtomically(path("gone.txt"), "listed").ok());
-    const pid_t child = ::fork();
-    if (child == 0) {
-        ::setenv("PX_TEST_RAISE", "KILL:frames-update", 1);
-        Result<StagedSet> set = StagedSet::begin(path("a.txt"), "set-tmp");
-        for (const char* name : {"a.txt", "b.txt"})
-            static_cast<void>(writeFileAtomically(set->pathFor(name), "new"));
-        StagedSet::Update update;
-        update.into = m_dir->path().toStdString();
-        update.moves = {"a.txt", "b.txt"};
-        update.removals = {"gone.txt"};
-        update.updatePoint = "frames-update";
-        static_cast<void>(set->commitInto(update));
-        ::_exit(0); // not reached
-    }
-    int status = 0;
-    QCOMPARE(::waitpid(child, &status, 0), child);
-    QVERIFY(WIFSIGNALED(status));
-    // Replaced meanwhile (a new file renamed over it: another inode).
-    QVERIFY(writeFileAtomically(path("gone.txt"), "someone else's, since").ok());
-    QCOMPARE(removeStaleTemporaries(path("a.txt")), 1);
-    QCOMPARE(read("a.txt"), std::string("new"));
-    QCOMPARE(read("b.txt"), std::string("new"));
-    QCOMPARE(read("gone.txt"), std::string("someone else's, since"));
     QCOMPARE(hidden(), QStringList());
 }
 
 void StagedSetTest::oneWriterAtATime() {
+    const std::string kLock = temporaryName("out", "lock");
     {
         Result<OutputLock> first = OutputLock::take(path("out"));
         QVERIFY(first.ok());
-        QVERIFY(fs::exists(path(".out.lock")));
+        QVERIFY(fs::exists(path(kLock)));
         const Result<OutputLock> second = OutputLock::take(path("out"));
         QVERIFY(!second.ok());
         QVERIFY2(second.error().message.find("another run (process " + std::to_string(::getpid()) +
                                              ") is writing it now") != std::string::npos,
                  second.error().message.c_str());
     }
-    QVERIFY(!fs::exists(path(".out.lock"))); // released and removed
+    QVERIFY(!fs::exists(path(kLock))); // released and removed
     // A killed holder's file (the kernel dropped its lock) is taken, then removed.
-    QVERIFY(writeFileAtomically(path(".out.lock"), "12345\n").ok());
+    QVERIFY(writeFileAtomically(path(kLock), "12345\n").ok());
     { QVERIFY(OutputLock::take(path("out")).ok()); }
-    QVERIFY(!fs::exists(path(".out.lock")));
+    QVERIFY(!fs::exists(path(kLock)));
     // Someone's file that bears the name is not a lock: refused, kept byte for byte.
     for (const std::string mine : {"notes\n", "12345", "12 34\n", "123456789012345678\n"}) {
-        QVERIFY(writeFileAtomically(path(".out.lock"), mine).ok());
+        QVERIFY(writeFileAtomically(path(kLock), mine).ok());
         const Result<OutputLock> taken = OutputLock::take(path("out"));
         QVERIFY2(!taken.ok(), mine.c_str());
         QVERIFY2(taken.error().message.find("is a file that Parallax Studio did not write") !=
                      std::string::npos,
                  taken.error().message.c_str());
-        QCOMPARE(read(".out.lock"), mine);
+        QCOMPARE(read(kLock), mine);
     }
 }
 

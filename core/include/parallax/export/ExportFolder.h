@@ -1,7 +1,8 @@
 #pragma once
-// An export folder written as a whole (StagedSet.h): files go into a hidden sibling of the target,
-// which is renamed into place only once everything is there. A failure, a crash or Ctrl-C leave
-// the target as it was (docs/conventions.md §6, for folders). One export at a time writes a
+// An export folder written as a whole (StagedSet.h): a new folder is staged beside the target and
+// renamed into place once everything is there; an earlier export (or an existing folder, a mount
+// point too) is staged inside and its files renamed in. A failure or Ctrl-C leave the target as it
+// was (docs/conventions.md §6, for folders). One export at a time writes a
 // folder (OutputLock.h): a second is refused, naming the first.
 //
 // Replacing an existing folder needs `force`, and even then only a folder that is empty or that a
@@ -62,7 +63,7 @@ private:
     ExportFolder(std::filesystem::path target, OutputLock lock, StagedSet stage)
         : m_target(std::move(target)), m_lock(std::move(lock)), m_stage(std::move(stage)) {}
     Result<Committed> commitStaged(std::string_view description);
-    Result<Committed> updateInPlace();
+    Result<Committed> updateInPlace(const std::string& header, bool relist);
     std::filesystem::path m_target;
     std::optional<OutputLock> m_lock; // declared before the stage: released after it is gone,
                                       // or once the export is in place

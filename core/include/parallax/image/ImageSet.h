@@ -1,9 +1,10 @@
 #pragma once
 // Writing a numbered set of images as one: a turntable's frames. Each frame is made on demand and
-// staged in a hidden folder beside the first (StagedSet.h); the frames are moved into place only
+// staged in a private folder beside the first (StagedSet.h); the frames are moved into place only
 // once every one is written, so a failure, a cancel or Ctrl-C leaves the previous set as it was and
-// nothing behind, and a kill during the moves is finished by the next run. One writer at a time
-// (OutputLock.h). Frames of an earlier, longer set past the new count are left as they were.
+// nothing behind; a kill during the moves leaves whole frames, old or new, never half a file. One
+// writer at a time (OutputLock.h). Frames of an earlier, longer set past the new count are left as
+// they were.
 
 #include "parallax/Result.h"
 #include "parallax/image/ImageFile.h"

@@ -6,8 +6,11 @@
 // comparison of names. Every reader opens through InputFile: it never blocks on a FIFO and reads
 // only regular files.
 //
-// The record is kept while an InputSession is open (a command of parallax-cli, an export);
-// outside one, nothing is recorded and the gate checks only the kinds of files it may replace.
+// The record belongs to one run: an InputSession (a command of parallax-cli, an editor's save,
+// export or bake) is the current run of the thread that opened it, and readers and writers on that
+// thread use it; sessions opened inside it join it. The editor's concurrent save, export and bake
+// run on their own threads and never see each other's inputs. Outside a session nothing is
+// recorded and the gate checks only the kinds of files it may replace.
 
 #include "parallax/Result.h"
 
@@ -15,6 +18,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace px {
 
@@ -84,17 +88,36 @@ std::string describeInput(const InputEntry& entry);
 // any work, naming both; so is one already recorded.
 Status planOutput(const std::string& path, std::string_view option);
 
+struct NamedPath {
+    std::string option; // "--out", "--height", ...
+    std::string path;
+};
+
+// The command line's files, before any work: records `inputs`, then plans each output
+// (planOutput). An output must not be a folder or a special file, its folder must exist and be
+// writable, and it must not be the same file as an input (by identity, or the same canonical
+// path) nor as another output. Errors name the file, both options and the problem.
+Status checkOutputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);
+
+// True if both paths name the same existing file, or the same canonical path.
+bool sameFile(const std::string& a, const std::string& b);
+
 // Notes a file this run created (its identity, kept when it is renamed into place): reading it back
 // later does not make it an input, since no one else's data can be in it.
 void noteCreated(const FileIdentity& identity);
 
-// Keeps the record while alive; sessions nest, and the record is cleared when the last one ends.
+// A run: the current run of this thread while alive (see above); one opened inside another joins
+// it, and the record ends with the outermost.
 class InputSession {
 public:
     InputSession();
     ~InputSession();
     InputSession(const InputSession&) = delete;
     InputSession& operator=(const InputSession&) = delete;
+    struct Record;
+
+private:
+    Record* m_own = nullptr; // null when joining an outer session
 };
 
 } // namespace px

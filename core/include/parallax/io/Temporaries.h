@@ -1,48 +1,46 @@
 #pragma once
-// The temporary files and folders a run has open, so that an interrupted run removes them, and the
-// recognition of those a killed run (SIGKILL, power loss) left behind, so that the next run on the
-// same target removes them.
+// The temporary files and stage folders of a run: their names, their removal on Ctrl-C, and the
+// removal of those a killed run (SIGKILL, power loss) left behind.
 //
-// Temporary names all have the form ".NAME.<role><pid>-<n>.<host>" beside the target NAME, role
-// one of "tmp", "export-tmp", "set-tmp" (and "export-old" of older versions), <host> eight hex
-// digits naming the boot and the PID namespace of the writer. A pid means something only on its
-// own host: a writer in another container sharing the folder may have any pid. So every writer
-// holds an flock() on its temporary (file or folder) from creation until it is renamed or
-// removed, and a leftover is removed only when that lock is free and either its host is ours and
-// its pid is gone, or it has not changed for an hour (a writer whose file system has no locks).
-// A set stage that was already committing (StagedSet.h) is finished, not removed.
+// Names: ".px-<kind>-<H>-<R>" beside (or, for a stage, inside) the target, kind "tmp" (a file) or
+// "stage" (a folder of regular files), H sixteen hex digits hashing the target's name, R sixteen
+// random ones: 43 bytes whatever the target's name, so any legal name has its temporaries. A
+// writer holds an flock() on its temporary from creation until it is renamed or removed.
+//
+// Nothing found on disk is obeyed: a leftover is only ever removed, and only when it is provably a
+// dead writer's of the same kind: its name, its owner (this user), its type (a stage holds only
+// regular files with one link), and its lock free. Anything else bearing such a name is left
+// alone and named in a one-line note on standard error.
 
 #include <filesystem>
 #include <string>
-#include <string_view>
 
 namespace px {
 
-// A hidden name beside `target` for this run's temporary of `role` (see above), unique to this
-// process and call.
-std::filesystem::path temporarySibling(const std::filesystem::path& target, std::string_view role);
+// A hidden name for this run's temporary of `kind` ("tmp", "stage") for the target named `name`;
+// "lock" gives the target's writer lock (OutputLock.h), the same for every run.
+std::string temporaryName(const std::string& name, const char* kind);
 
 // Takes a shared flock() on `fd`, the writer's sign of life on its temporary (see above).
 void holdTemporary(int fd);
 
-// This host's token: the boot and the PID namespace, as eight hex digits.
-const std::string& hostToken();
-
-// Records a temporary path (a file, or a folder registered before the files in it). Returns a
-// handle for releaseTemporary(); -1 when the table is full (the path is then only removed by the
-// next run's sweep).
-int registerTemporary(const std::filesystem::path& path);
+// Records this run's temporary `name` in the folder open as `dir` (kept open by the caller while
+// registered); `self` is the temporary's own folder fd for a stage (-1 for a file). Returns a
+// handle for releaseTemporary(); -1 when the table is full (then only a later run removes it).
+int registerTemporary(int dir, const std::string& name, int self = -1);
 void releaseTemporary(int handle);
 
-// Removes every registered temporary, newest first (files, then their folder). Async-signal-safe:
-// only unlink() and rmdir(), for the CLI's SIGINT/SIGTERM handler.
+// Removes every registered temporary, newest first; a stage with the files in it.
+// Async-signal-safe (getdents64, unlinkat), for the CLI's SIGINT/SIGTERM handler.
 void removeTemporariesNow() noexcept;
 
-// Removes the leftovers of dead runs beside `target` (see above), and finishes their committed set
-// stages. Returns how many it removed or finished.
+// Removes the provably dead leftovers of target `name` in the folder open as `dir` (see above).
+// Returns how many it removed.
+int removeStaleTemporaries(int dir, const std::string& name);
+// The same for `target`'s folder and name.
 int removeStaleTemporaries(const std::filesystem::path& target);
 
-// Within an InterruptDeferral (a few renames that must all happen), the CLI's signal handler only
+// Within an InterruptDeferral (a few renames that belong together), the CLI's signal handler only
 // records the signal: deferInterrupt() returns true and the signal is raised again when the last
 // deferral ends. Async-signal-safe.
 bool deferInterrupt(int signal) noexcept;
@@ -54,25 +52,30 @@ public:
     InterruptDeferral& operator=(const InterruptDeferral&) = delete;
 };
 
-// Test hook for the fault suite: with PX_TEST_RAISE=SIGNAL:POINT (SIGNAL one of INT, TERM, KILL,
-// STOP) the process raises that signal the first time it reaches `point`, so that interruptions
-// land at exact moments without timing (STOP: the test continues the process when it has done what
-// it wanted to do meanwhile). Points: "write" (half a file written to its temporary), "commit"
-// (before the rename), "export-commit" (every file staged), "export-update" (half an earlier export
-// updated in place), "frames-commit" and "frames-update" (the same for a turntable's frames).
+// Fault injection, set only by tests (the fault suite's own build of the CLI, in-process tests):
+// the shipped program never sets it and reads no environment for it.
+struct TestHooks {
+    long long failWriteAt = -1; // a file's write fails with ENOSPC once this many bytes are written
+    void (*reached)(const char* point) = nullptr; // called at each moment below
+};
+void setTestHooks(const TestHooks& hooks);
+const TestHooks& testHooks();
+// Moments: "write" (half a file written), "commit" (before its rename), "export-commit" (every
+// export file staged), "export-update" (half an update moved), "frames-commit", "frames-update".
 void testInterruptPoint(const char* point);
 
-// Registers a path for its lifetime.
+// Registers a temporary named by path (for writers outside the io layer: a plotting library's file)
+// for its lifetime.
 class TemporaryGuard {
 public:
-    explicit TemporaryGuard(const std::filesystem::path& path)
-        : m_handle(registerTemporary(path)) {}
-    ~TemporaryGuard() { releaseTemporary(m_handle); }
+    explicit TemporaryGuard(const std::filesystem::path& path);
+    ~TemporaryGuard();
     TemporaryGuard(const TemporaryGuard&) = delete;
     TemporaryGuard& operator=(const TemporaryGuard&) = delete;
 
 private:
-    int m_handle;
+    int m_dir = -1;
+    int m_handle = -1;
 };
 
 } // namespace px

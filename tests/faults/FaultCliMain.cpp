@@ -1,0 +1,45 @@
+// The fault suite's build of parallax-cli: the shipped program plus the fault-injection hooks
+// (Temporaries.h), read from the environment here and only here: PX_TEST_FAIL_WRITE_AT=N fails a
+// file's write with ENOSPC once N bytes are written; PX_TEST_RAISE=SIGNAL:POINT raises INT, TERM,
+// HUP, KILL or STOP the first time the run reaches POINT.
+
+#include "Cli.h"
+#include "parallax/io/Temporaries.h"
+
+#include <csignal>
+#include <cstdlib>
+#include <string>
+
+namespace {
+
+int gSignal = 0;
+std::string gPoint;
+bool gFired = false;
+
+void raiseAt(const char* point) {
+    if (gFired || gPoint != point)
+        return;
+    gFired = true; // once
+    std::raise(gSignal);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    px::TestHooks hooks;
+    if (const char* at = std::getenv("PX_TEST_FAIL_WRITE_AT"))
+        hooks.failWriteAt = std::atoll(at);
+    if (const char* spec = std::getenv("PX_TEST_RAISE")) {
+        const std::string text(spec);
+        const std::string name = text.substr(0, text.find(':'));
+        gPoint = text.find(':') == std::string::npos ? "" : text.substr(text.find(':') + 1);
+        gSignal = name == "TERM"   ? SIGTERM
+                  : name == "KILL" ? SIGKILL
+                  : name == "STOP" ? SIGSTOP
+                  : name == "HUP"  ? SIGHUP
+                                   : SIGINT;
+        hooks.reached = raiseAt;
+    }
+    px::setTestHooks(hooks);
+    return px::cli::run(argc, argv);
+}
