@@ -1,7 +1,7 @@
 // The fault suite's build of parallax-cli: the shipped program plus the fault-injection hooks
 // (Temporaries.h), read from the environment here and only here: PX_TEST_FAIL_WRITE_AT=N fails a
 // file's write with ENOSPC once N bytes are written; PX_TEST_RAISE=SIGNAL:POINT raises INT, TERM,
-// HUP, KILL or STOP the first time the run reaches POINT.
+// HUP, KILL or STOP the first time the run reaches POINT (POINT@N: the N-th time).
 
 #include "Cli.h"
 #include "parallax/io/Temporaries.h"
@@ -14,13 +14,11 @@ namespace {
 
 int gSignal = 0;
 std::string gPoint;
-bool gFired = false;
+long gCountdown = 1; // reaches of the point until the signal; once
 
 void raiseAt(const char* point) {
-    if (gFired || gPoint != point)
-        return;
-    gFired = true; // once
-    std::raise(gSignal);
+    if (gCountdown > 0 && gPoint == point && --gCountdown == 0)
+        std::raise(gSignal);
 }
 
 } // namespace
@@ -33,6 +31,10 @@ int main(int argc, char** argv) {
         const std::string text(spec);
         const std::string name = text.substr(0, text.find(':'));
         gPoint = text.find(':') == std::string::npos ? "" : text.substr(text.find(':') + 1);
+        if (const std::size_t at = gPoint.find('@'); at != std::string::npos) {
+            gCountdown = std::atol(gPoint.c_str() + at + 1);
+            gPoint.resize(at);
+        }
         gSignal = name == "TERM"   ? SIGTERM
                   : name == "KILL" ? SIGKILL
                   : name == "STOP" ? SIGSTOP
