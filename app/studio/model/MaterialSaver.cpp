@@ -2,6 +2,7 @@
 
 #include "model/MapLoading.h"
 #include "parallax/image/ImageFile.h"
+#include "parallax/io/AtomicWrite.h"
 #include "parallax/io/Inputs.h"
 #include "parallax/io/OutputGate.h"
 #include "parallax/material/MaterialFile.h"
@@ -140,6 +141,7 @@ Result<DocumentState> saveDocumentState(const DocumentState& state, const std::s
         }
     }
     DocumentState saved = state;
+    OutputBatch outputs; // the maps and the material file, all or none (AtomicWrite.h)
     for (MapKind kind : kAllMapKinds) {
         if (!state.isUnsaved(kind) || !state.hasMap(kind))
             continue;
@@ -159,6 +161,8 @@ Result<DocumentState> saveDocumentState(const DocumentState& state, const std::s
     onDisk.maps = relativeMapPaths(saved.material.maps, path);
     if (Status written = saveMaterial(onDisk, path); !written)
         return written.error();
+    if (Status committed = outputs.commit(); !committed)
+        return committed.error();
     return saved;
 }
 

@@ -220,6 +220,9 @@ Status planOutput(const std::string& path, std::string_view option) {
     return success();
 }
 
+namespace {
+
+// Both paths name the same existing file, or the same canonical path (two outputs not there yet).
 bool sameFile(const std::string& a, const std::string& b) {
     namespace fs = std::filesystem;
     const std::optional<FileIdentity> ia = identityOf(a), ib = identityOf(b);
@@ -232,8 +235,6 @@ bool sameFile(const std::string& a, const std::string& b) {
     const fs::path cb = fs::weakly_canonical(b, ec);
     return !ec && ca == cb;
 }
-
-namespace {
 
 Status checkOutput(const NamedPath& out) {
     namespace fs = std::filesystem;
@@ -256,26 +257,21 @@ Status checkOutput(const NamedPath& out) {
 } // namespace
 
 Status checkOutputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
+    const InputSession run; // the caller's run, or one for this check alone
+    for (const NamedPath& in : inputs) {
+        if (Status s = noteInput(in.path, in.option); !s)
+            return s;
+    }
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         const NamedPath& out = outputs[i];
-        for (const NamedPath& in : inputs) {
-            if (sameFile(out.path, in.path))
-                return sameAsInput(out.path, out.option, {in.path, in.option});
-        }
         for (std::size_t j = 0; j < i; ++j) {
             if (sameFile(out.path, outputs[j].path))
                 return fileError(out.path, out.option + " names the same file as " +
                                                outputs[j].option + "; give each output its own");
         }
+        if (Status s = planOutput(out.path, out.option); !s) // not an input, by identity
+            return s;
         if (Status s = checkOutput(out); !s)
-            return s;
-    }
-    for (const NamedPath& in : inputs) {
-        if (Status s = noteInput(in.path, in.option); !s)
-            return s;
-    }
-    for (const NamedPath& out : outputs) {
-        if (Status s = planOutput(out.path, out.option); !s)
             return s;
     }
     return success();

@@ -5,12 +5,10 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <dirent.h>
 #include <fcntl.h>
 #include <optional>
 #include <sys/stat.h>
 #include <unistd.h>
-#include <vector>
 
 namespace px {
 
@@ -109,7 +107,9 @@ Status replaceAt(int fromDir, const std::string& from, int toDir, const std::str
                  const std::string& shown, bool folder) {
     if (folder) {
         // Never over anything: the target was absent when the stage was made beside it.
-        if (::renameat2(fromDir, from.c_str(), toDir, to.c_str(), RENAME_NOREPLACE) != 0)
+        // (A file system without RENAME_NOREPLACE: rename() replaces at most an empty folder.)
+        if (::renameat2(fromDir, from.c_str(), toDir, to.c_str(), RENAME_NOREPLACE) != 0 &&
+            (errno != EINVAL || ::renameat(fromDir, from.c_str(), toDir, to.c_str()) != 0))
             return fileError(shown,
                              "cannot move the folder into place (" + systemReason(errno) + ")");
         return success();
@@ -137,36 +137,6 @@ Status removeOwnedAt(int dir, const std::string& name, const std::string& shown)
 
 Status removeOwned(const fs::path& path) {
     return removeOwnedAt(AT_FDCWD, path.string(), path.string());
-}
-
-void discardTemporaryAt(int dir, const std::string& name) {
-    struct stat st {};
-    if (::fstatat(dir, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0)
-        return;
-    if (!S_ISDIR(st.st_mode)) {
-        if (!inputAt(st))
-            ::unlinkat(dir, name.c_str(), 0);
-        return;
-    }
-    const int fd = ::openat(dir, name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-    if (fd < 0)
-        return;
-    std::vector<std::string> names;
-    if (DIR* list = ::fdopendir(::dup(fd))) {
-        while (const dirent* e = ::readdir(list)) {
-            if (std::string_view(e->d_name) != "." && std::string_view(e->d_name) != "..")
-                names.emplace_back(e->d_name);
-        }
-        ::closedir(list);
-    }
-    for (const std::string& entry : names) {
-        struct stat in {};
-        if (::fstatat(fd, entry.c_str(), &in, AT_SYMLINK_NOFOLLOW) == 0 && !S_ISDIR(in.st_mode) &&
-            !inputAt(in))
-            ::unlinkat(fd, entry.c_str(), 0);
-    }
-    ::close(fd);
-    ::unlinkat(dir, name.c_str(), AT_REMOVEDIR);
 }
 
 void discardTemporary(const fs::path& path) {

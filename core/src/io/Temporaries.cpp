@@ -2,6 +2,7 @@
 
 #include "parallax/io/Fnv1a.h"
 #include "parallax/io/Inputs.h"
+#include "parallax/io/OutputGate.h"
 
 #include <array>
 #include <atomic>
@@ -96,18 +97,32 @@ void leaveAlone(const std::string& name, const std::string& why) {
                  name.c_str(), why.c_str());
 }
 
-// Removes the leftover `name` in `dir` of `kind` if it is provably a dead writer's (see the
-// header): its lock free, its owner us, nothing in it that a writer does not make.
+// The entries of the folder open as `fd`, read through a duplicate (the fd keeps its offset).
+std::vector<std::string> namesIn(int fd) {
+    std::vector<std::string> names;
+    if (DIR* list = ::fdopendir(::dup(fd))) {
+        ::rewinddir(list);
+        while (const dirent* e = ::readdir(list)) {
+            if (std::strcmp(e->d_name, ".") != 0 && std::strcmp(e->d_name, "..") != 0)
+                names.emplace_back(e->d_name);
+        }
+        ::closedir(list);
+    }
+    return names;
+}
+
+// Removes the leftover `name` in `dir` (a stage, or a file) if it is provably a dead writer's
+// (see the header): its lock free, its owner us, nothing in it that a writer does not make.
 bool removeIfDead(int dir, const std::string& name, bool stage) {
     struct stat st {};
     if (::fstatat(dir, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0)
         return false;
-    if (stage != S_ISDIR(st.st_mode) || (stage && st.st_uid != ::geteuid())) {
-        leaveAlone(name, stage ? notOurs(st) : fileKind(st.st_mode));
-        return false;
-    }
-    if (!stage && !notOurs(st).empty()) {
-        leaveAlone(name, notOurs(st));
+    const std::string why = !stage                     ? notOurs(st)
+                            : !S_ISDIR(st.st_mode)     ? fileKind(st.st_mode) + " for a folder"
+                            : st.st_uid != ::geteuid() ? std::string("a folder of another user")
+                                                       : std::string();
+    if (!why.empty()) {
+        leaveAlone(name, why);
         return false;
     }
     const int flags = O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | (stage ? O_DIRECTORY : 0);
@@ -117,32 +132,20 @@ bool removeIfDead(int dir, const std::string& name, bool stage) {
     struct stat opened {};
     bool dead = ::fstat(fd, &opened) == 0 && sameInode(st, opened) &&
                 ::flock(fd, LOCK_EX | LOCK_NB) == 0; // a live writer holds it shared
-    if (dead && stage) {
-        // Every entry must be one a writer makes, checked through the opened folder: a link or a
-        // folder swapped in can only make this leave the stage alone.
-        if (DIR* list = ::fdopendir(::dup(fd))) {
-            std::vector<std::string> names;
-            while (const dirent* e = ::readdir(list)) {
-                if (std::strcmp(e->d_name, ".") != 0 && std::strcmp(e->d_name, "..") != 0)
-                    names.emplace_back(e->d_name);
-            }
-            ::closedir(list);
-            for (const std::string& entry : names) {
-                struct stat in {};
-                if (::fstatat(fd, entry.c_str(), &in, AT_SYMLINK_NOFOLLOW) != 0)
-                    continue;
-                if (const std::string why = notOurs(in); !why.empty()) {
-                    leaveAlone(name, "it holds " + entry + ", " + why);
-                    dead = false;
-                    break;
-                }
-            }
-        } else {
+    // Every entry checked through the opened folder: a link or a folder swapped in can only make
+    // this leave the stage alone, and removal unlinks names in it, never following one.
+    for (const std::string& entry : dead&& stage ? namesIn(fd) : std::vector<std::string>{}) {
+        struct stat in {};
+        if (::fstatat(fd, entry.c_str(), &in, AT_SYMLINK_NOFOLLOW) != 0)
+            continue;
+        if (const std::string not_ours = notOurs(in); !not_ours.empty()) {
+            leaveAlone(name, "it holds " + entry + ", " + not_ours);
             dead = false;
+            break;
         }
-        if (dead)
-            emptyFolder(fd);
     }
+    if (dead && stage)
+        emptyFolder(fd);
     struct stat now {};
     if (dead && ::fstatat(dir, name.c_str(), &now, AT_SYMLINK_NOFOLLOW) == 0 && sameInode(now, st))
         dead = ::unlinkat(dir, name.c_str(), stage ? AT_REMOVEDIR : 0) == 0;
@@ -215,19 +218,14 @@ void removeTemporariesNow() noexcept {
 int removeStaleTemporaries(int dir, const std::string& name) {
     const std::string hash = nameHash(name);
     std::vector<std::pair<std::string, bool>> found; // name, stage
-    if (DIR* list = ::fdopendir(::dup(dir))) {
-        ::rewinddir(list);
-        while (const dirent* e = ::readdir(list)) {
-            const std::string_view entry(e->d_name);
-            for (const bool stage : {false, true}) {
-                const std::string prefix = std::string(".px-") + (stage ? "stage-" : "tmp-") + hash;
-                if (entry.size() == prefix.size() + 17 && entry.starts_with(prefix + "-") &&
-                    entry.find_first_not_of("0123456789abcdef", prefix.size() + 1) ==
-                        std::string_view::npos)
-                    found.emplace_back(entry, stage);
-            }
+    for (const std::string& entry : namesIn(dir)) {
+        for (const bool stage : {false, true}) {
+            const std::string prefix =
+                std::string(".px-") + (stage ? "stage-" : "tmp-") + hash + "-";
+            if (entry.size() == prefix.size() + 16 && entry.starts_with(prefix) &&
+                entry.find_first_not_of("0123456789abcdef", prefix.size()) == std::string::npos)
+                found.emplace_back(entry, stage);
         }
-        ::closedir(list);
     }
     int removed = 0;
     for (const auto& [entry, stage] : found)
@@ -274,6 +272,17 @@ const TestHooks& testHooks() {
 void testInterruptPoint(const char* point) {
     if (gHooks.reached != nullptr && point != nullptr && *point != '\0')
         gHooks.reached(point);
+}
+
+void discardTemporaryAt(int dir, const std::string& name) {
+    const int fd = ::openat(dir, name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0) {
+        ::unlinkat(dir, name.c_str(), 0); // a file (or nothing)
+        return;
+    }
+    emptyFolder(fd);
+    ::close(fd);
+    ::unlinkat(dir, name.c_str(), AT_REMOVEDIR);
 }
 
 TemporaryGuard::TemporaryGuard(const fs::path& path) {

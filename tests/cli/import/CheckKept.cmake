@@ -4,7 +4,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files keep.json keep-twin.js
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "keep.json changed")
 endif()
-file(GLOB left .keep.json* *.tmp*)
+file(GLOB left .keep.json* *.tmp* .px-tmp-*)
 if(left)
   message(FATAL_ERROR "left behind: ${left}")
 endif()

@@ -99,9 +99,6 @@ struct NamedPath {
 // path) nor as another output. Errors name the file, both options and the problem.
 Status checkOutputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);
 
-// True if both paths name the same existing file, or the same canonical path.
-bool sameFile(const std::string& a, const std::string& b);
-
 // Notes a file this run created (its identity, kept when it is renamed into place): reading it back
 // later does not make it an input, since no one else's data can be in it.
 void noteCreated(const FileIdentity& identity);

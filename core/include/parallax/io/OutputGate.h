@@ -56,8 +56,8 @@ Status replaceAt(int fromDir, const std::string& from, int toDir, const std::str
 Status removeOwned(const std::filesystem::path& path);
 Status removeOwnedAt(int dir, const std::string& name, const std::string& shown);
 
-// Removes this run's own temporary file or folder (of files), best effort, through the folder
-// fds; inputs and anything but regular files in it are kept.
+// Removes this run's own temporary file or stage folder (with its files), best effort, through
+// the folder fds (Temporaries.cpp).
 void discardTemporary(const std::filesystem::path& path);
 void discardTemporaryAt(int dir, const std::string& name);
 
