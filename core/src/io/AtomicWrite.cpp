@@ -123,7 +123,8 @@ Status writeFileAtomically(const std::string& path, std::string_view contents) {
         return fileError(path, "writing failed (" + systemReason(code) +
                                    "); the previous file, if any, is unchanged");
     }
-    if (tBatch != nullptr) {
+    // A set's stage is committed by its own StagedSet, never by a batch.
+    if (tBatch != nullptr && !folder.filename().string().starts_with(".px-stage-")) {
         tBatch->push_back(std::move(staged));
         return success();
     }
