@@ -100,7 +100,11 @@ Status writeFileAtomically(const std::string& path, std::string_view contents) {
         return createError(path, errno);
     staged.name = target.filename().string();
     staged.shown = target != fs::path(path) ? path + " (a link to " + target.string() + ")" : path;
-    removeStaleTemporaries(staged.dir.get(), staged.name);
+    // A set's stage is this run's own folder: nothing to sweep in it, and its StagedSet, never a
+    // batch, commits it.
+    const bool inStage = folder.filename().string().starts_with(".px-stage-");
+    if (!inStage)
+        removeStaleTemporaries(staged.dir.get(), staged.name);
     staged.temp = temporaryName(staged.name, "tmp");
     staged.file = UniqueFd(::openat(staged.dir.get(), staged.temp.c_str(),
                                     O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666));
@@ -123,8 +127,7 @@ Status writeFileAtomically(const std::string& path, std::string_view contents) {
         return fileError(path, "writing failed (" + systemReason(code) +
                                    "); the previous file, if any, is unchanged");
     }
-    // A set's stage is committed by its own StagedSet, never by a batch.
-    if (tBatch != nullptr && !folder.filename().string().starts_with(".px-stage-")) {
+    if (tBatch != nullptr && !inStage) {
         tBatch->push_back(std::move(staged));
         return success();
     }
