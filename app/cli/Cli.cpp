@@ -67,9 +67,11 @@ int finishStandardOutput(int status, bool closed) {
     std::cout.flush();
     errno = 0;
     const bool flushed = std::fflush(stdout) == 0;
-    const int code = errno;
+    int code = errno;
     if (flushed && !std::ferror(stdout) && !std::cout.bad())
         return status;
+    if (code == 0) // failed earlier (stdio keeps no errno): one byte more says why
+        code = ::write(STDOUT_FILENO, "\n", 1) < 0 ? errno : 0;
     const std::string why = closed      ? std::string("it is closed")
                             : code != 0 ? "writing failed (" + systemReason(code) + ")"
                                         : std::string("writing failed");

@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <sys/stat.h>
+#include <thread>
 #include <unistd.h>
 
 using namespace px;
@@ -31,6 +32,7 @@ private slots:
     void onlyRegularFilesReplaced();
     void linkWrittenThrough();
     void removalsKeepWhatIsNotTheCallers();
+    void eachThreadsRunHasItsOwnInputs();
 
 private:
     std::string path(const std::string& name) const {
@@ -205,6 +207,31 @@ void OutputGateTest::removalsKeepWhatIsNotTheCallers() {
     discardTemporary(path("stage"));
     QVERIFY(!fs::exists(path("stage")));
     QCOMPARE(readTextFile(path("h.png"), false).value(), std::string("height"));
+}
+
+// The editor saves, exports and bakes on worker threads at once: each run sees only its own
+// inputs. A run on one thread refuses its input; another thread's run may write that file; a
+// session opened inside a run joins it.
+void OutputGateTest::eachThreadsRunHasItsOwnInputs() {
+    const InputSession save;
+    QVERIFY(InputFile::open(path("h.png")).ok());
+    QVERIFY(!checkReplaceable(path("h.png")).ok());
+    {
+        const InputSession nested; // joins the thread's run
+        QVERIFY(!checkReplaceable(path("hard.png")).ok());
+    }
+    QVERIFY(!checkReplaceable(path("h.png")).ok()); // still recorded: the nested one only joined
+    bool otherRunRefused = true, otherRunSeesItsOwn = false;
+    std::thread exportJob([&] {
+        const InputSession run;
+        otherRunRefused = !checkReplaceable(path("h.png")).ok();
+        otherRunSeesItsOwn =
+            InputFile::open(path("hard.png")).ok() && !checkReplaceable(path("h.png")).ok();
+    });
+    exportJob.join();
+    QVERIFY(!otherRunRefused);
+    QVERIFY(otherRunSeesItsOwn);
+    QVERIFY(!checkReplaceable(path("h.png")).ok());
 }
 
 QTEST_GUILESS_MAIN(OutputGateTest)
