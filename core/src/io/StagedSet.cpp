@@ -38,7 +38,9 @@ Result<StagedSet> StagedSet::begin(const fs::path& into, const std::string& anch
     const std::string& key = set.m_fresh ? into.filename().string() : anchor;
     set.m_name = temporaryName(key, "stage");
     set.m_path = (set.m_fresh ? parent : into) / set.m_name;
-    if (::mkdirat(set.m_parent.get(), set.m_name.c_str(), 0700) != 0)
+    // A fresh stage becomes the user's folder: the usual mode (umask applied); one inside the
+    // target is only ever ours.
+    if (::mkdirat(set.m_parent.get(), set.m_name.c_str(), set.m_fresh ? 0777 : 0700) != 0)
         return fileError(into.string(), std::string("cannot create the working folder ") +
                                             (set.m_fresh ? "beside" : "in") + " it (" +
                                             systemReason(errno) + ")");

@@ -51,8 +51,7 @@ Result<std::filesystem::path> outputTarget(const std::filesystem::path& path);
 Status replaceAt(int fromDir, const std::string& from, int toDir, const std::string& to,
                  const std::string& shown, bool folder = false);
 
-// Removes the regular file at `path` (or `name` in `dir`); refuses inputs and anything but a
-// regular file, naming it.
+// Removes the regular file `path` (`name` in `dir`); refuses inputs and other kinds, naming it.
 Status removeOwned(const std::filesystem::path& path);
 Status removeOwnedAt(int dir, const std::string& name, const std::string& shown);
 

@@ -2,7 +2,7 @@
 // Several files written as one (an export folder, a turntable's frames, every shader variant): an
 // interruption leaves no debris and never half a file, and nothing needs finishing later.
 //
-// The files are written into a private stage folder this run creates (mkdirat, 0700) on the
+// The files are written into a stage folder this run creates (mkdirat) on the
 // device of the folder they go into (Temporaries.h names it; the run holds its lock and Ctrl-C
 // removes it with its files). Then:
 // - a folder that did not exist is the stage, made beside it and renamed into place: atomic;

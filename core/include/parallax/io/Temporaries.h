@@ -34,10 +34,9 @@ void releaseTemporary(int handle);
 // Async-signal-safe (getdents64, unlinkat), for the CLI's SIGINT/SIGTERM handler.
 void removeTemporariesNow() noexcept;
 
-// Removes the provably dead leftovers of target `name` in the folder open as `dir` (see above).
-// Returns how many it removed.
+// Removes the provably dead leftovers of target `name` in the folder open as `dir`, or beside
+// `target` (see above). Returns how many it removed.
 int removeStaleTemporaries(int dir, const std::string& name);
-// The same for `target`'s folder and name.
 int removeStaleTemporaries(const std::filesystem::path& target);
 
 // Within an InterruptDeferral (a few renames that belong together), the CLI's signal handler only
@@ -52,8 +51,7 @@ public:
     InterruptDeferral& operator=(const InterruptDeferral&) = delete;
 };
 
-// Fault injection, set only by tests (the fault suite's own build of the CLI, in-process tests):
-// the shipped program never sets it and reads no environment for it.
+// Fault injection, set only by tests (the fault suite's build of the CLI, in-process tests).
 struct TestHooks {
     long long failWriteAt = -1; // a file's write fails with ENOSPC once this many bytes are written
     void (*reached)(const char* point) = nullptr; // called at each moment below
@@ -64,8 +62,7 @@ const TestHooks& testHooks();
 // export file staged), "export-update" (half an update moved), "frames-commit", "frames-update".
 void testInterruptPoint(const char* point);
 
-// Registers a temporary named by path (for writers outside the io layer: a plotting library's file)
-// for its lifetime.
+// Registers a temporary by path for its lifetime (a plotting library's file).
 class TemporaryGuard {
 public:
     explicit TemporaryGuard(const std::filesystem::path& path);
