@@ -120,6 +120,7 @@ void FaultConfinedTest::initTestCase() {
 QString FaultConfinedTest::prepare(const QString& name) {
     const QString root = m_temp.path() + "/" + name;
     QDir(root).removeRecursively();
+    QDir().mkpath(root);
     if (!copyFolder(m_template, root + "/work"))
         return {};
     QRandomGenerator random(m_seed);
@@ -251,30 +252,36 @@ void FaultConfinedTest::plantedLeftoversNeverObeyed() {
     record(run, true, false, 0);
 }
 
-// A dead-looking stage whose entries x (a file) and y (a link to the victim folder) a thread
-// exchanges as fast as it can while runs sweep it: whatever instant each check and removal meet,
-// nothing of the victim may go. Bounded iterations, no sleeps.
+// A dead-looking stage whose entry x a thread exchanges, as fast as it can, with a link to the
+// victim folder kept outside (renameat2 RENAME_EXCHANGE) while a run sweeps it: whatever instant
+// each check and removal meet, nothing of the victim may go. Bounded iterations, no sleeps.
 void FaultConfinedTest::swapRacingTheRemoval() {
     const QString work = prepare("swap");
     QVERIFY(!work.isEmpty());
     const QString root = QFileInfo(work).path();
     const auto victim = snapshot(root + "/victim");
     const auto home = snapshot(root + "/home");
+    QDir().mkpath(root + "/holder");
+    const int holder = ::open((root + "/holder").toLocal8Bit().constData(), O_RDONLY | O_DIRECTORY);
+    QVERIFY(holder >= 0);
     int removedOrKept[2] = {0, 0};
-    for (int round = 0; round < 4; ++round) {
+    for (int round = 0; round < 6; ++round) {
         const fs::path stage = fs::path(work.toStdString()) / px::temporaryName("out.png", "stage");
         fs::create_directory(stage);
         for (int i = 0; i < 50 + 40 * round; ++i)
             writeFile(QString::fromStdString((stage / ("f" + std::to_string(i))).string()), "x");
         writeFile(QString::fromStdString((stage / "x").string()), "file");
-        fs::create_directory_symlink((root + "/victim").toStdString(), stage / "y");
+        std::error_code ec;
+        fs::remove(fs::path((root + "/holder/x").toStdString()), ec);
+        fs::create_directory_symlink((root + "/victim").toStdString(),
+                                     (root + "/holder/x").toStdString());
         const int fd = ::open(stage.c_str(), O_RDONLY | O_DIRECTORY);
         QVERIFY(fd >= 0);
         std::atomic<bool> stop{false};
         std::thread swapper([&] {
             for (long i = 0; i < 20000000 && !stop.load(); ++i) {
-                if (::renameat2(fd, "x", fd, "y", RENAME_EXCHANGE) != 0)
-                    break; // one of them was removed
+                if (::renameat2(fd, "x", holder, "x", RENAME_EXCHANGE) != 0)
+                    break; // removed by the sweep
             }
         });
         const CliRun run = runCli(work, {"sample", "bricks", "--size", "16", "--seed",
@@ -285,10 +292,10 @@ void FaultConfinedTest::swapRacingTheRemoval() {
         QVERIFY2(run.status == 0, qPrintable(run.output));
         expectOutsideUnchanged(root, victim, home);
         ++removedOrKept[fs::exists(stage) ? 1 : 0];
-        std::error_code ec;
         fs::remove_all(stage, ec); // the test's own cleanup (remove_all does not follow links)
         record(run, true, false, 0);
     }
+    ::close(holder);
     qInfo("swap race: %d stages removed, %d left alone", removedOrKept[0], removedOrKept[1]);
 }
 
@@ -348,6 +355,8 @@ void FaultConfinedTest::nonUtf8Names() {
     QCOMPARE(newHidden(work), QStringList());
     QCOMPARE(newHidden(work + "/out"), QStringList());
     record(run, true, false, 0);
+    std::error_code ec;
+    fs::remove_all(work.toStdString(), ec); // names Qt cannot spell, so QTemporaryDir cannot remove
 }
 
 void FaultConfinedTest::standardOutputLost_data() {
