@@ -178,16 +178,17 @@ Result<ExportFolder::Committed> ExportFolder::updateInPlace(const std::string& h
     }
     update.commitPoint = "export-commit";
     update.updatePoint = "export-update";
+    if (relist) { // then the manifest of what is there now
+        update.then = [&] {
+            std::string marker = header;
+            for (const std::string& file : m_files)
+                marker += file + "\n";
+            return writeTextFile((m_target / kExportMarker).string(), marker);
+        };
+    }
     Result<std::vector<std::string>> kept = m_stage.commit(update);
     if (!kept)
         return kept.error();
-    if (relist) { // the manifest of what is there now
-        std::string marker = header;
-        for (const std::string& file : m_files)
-            marker += file + "\n";
-        if (Status s = writeTextFile((m_target / kExportMarker).string(), marker); !s)
-            return s.error();
-    }
     Committed result{m_files, {}};
     std::error_code ec;
     for (fs::directory_iterator it(m_target, ec), end; !ec && it != end; it.increment(ec)) {

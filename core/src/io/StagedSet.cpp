@@ -108,6 +108,10 @@ Result<std::vector<std::string>> StagedSet::commit(const Update& update) {
     m_name.clear();
     for (const std::string& name : removals)
         static_cast<void>(removeOwnedAt(into, name, (m_into / name).string())); // refused: kept
+    if (update.then) {
+        if (Status s = update.then(); !s)
+            return s.error();
+    }
     ::fsync(into);
     return kept;
 }

@@ -18,6 +18,7 @@
 #include "parallax/io/OutputGate.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,7 @@ public:
         std::vector<std::string> removals; // names in `into` removed after (an earlier export's)
         const char* commitPoint = "";      // test moments (Temporaries.h): all staged; half moved
         const char* updatePoint = "";
+        std::function<Status()> then; // last, Ctrl-C still waiting (an export's final manifest)
     };
     // Renames the stage into place (fresh), or moves and removes as `update` says, every target
     // checked by the output gate before the first rename. Returns the removals that were kept
