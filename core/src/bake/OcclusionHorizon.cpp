@@ -23,6 +23,17 @@ int firstCell(int p, double d, int cells, bool clamp) {
     return clamp && p >= cells && p > 0 ? p - 1 : p;
 }
 
+// The cell a ray moving d per uv is in at coordinate t (a cell line itself: the one ahead);
+// `current` if it does not move along this axis. (No floor(): a library call without SSE4.1.)
+int cellAhead(double t, double d, int current) {
+    if (d == 0.0)
+        return current;
+    int i = static_cast<int>(t);
+    if (static_cast<double>(i) > t)
+        --i; // i = floor(t)
+    return d > 0.0 || static_cast<double>(i) != t ? i : i - 1;
+}
+
 } // namespace
 
 HorizonSearch::HorizonSearch(const HeightField& field, WrapMode wrap, double heightScale,
@@ -79,31 +90,40 @@ float HorizonSearch::nodeMax(int level, int nx, int ny) const {
     return l.max[static_cast<std::size_t>(ny) * l.width + nx];
 }
 
-double HorizonSearch::cellSecant(int cx, int cy, int px, int py, double zp, double dx, double dy,
-                                 double ra, double rb) const {
-    const double h00 = texel(cx, cy), h10 = texel(cx + 1, cy);
-    const double h01 = texel(cx, cy + 1), h11 = texel(cx + 1, cy + 1);
+double HorizonSearch::cellSecant(int lx, int ly, double ax, double ay, double zp, double dx,
+                                 double dy, double ra, double rb, double best) const {
+    // Corners by local cell coordinates: with repeat the last cell's far side wraps to 0.
+    const int W = m_field.width, H = m_field.height;
+    const int lx1 = lx + 1 < W ? lx + 1 : 0, ly1 = ly + 1 < H ? ly + 1 : 0;
+    const float* row0 = &m_field.texels[static_cast<std::size_t>(ly) * W];
+    const float* row1 = &m_field.texels[static_cast<std::size_t>(ly1) * W];
+    const double h00 = row0[lx], h10 = row0[lx1], h01 = row1[lx], h11 = row1[lx1];
     const double e1 = h10 - h00, e2 = h01 - h00, k = h11 - h10 - h01 + h00;
-    const double ax = px - cx, ay = py - cy; // p in the cell's own coordinates
-    // z(r) - z(p) = A + B r + C r^2 along the ray inside the cell.
-    const double B = m_scale * (e1 * dx + e2 * dy + k * (ax * dy + ay * dx));
-    const double C = m_scale * k * dx * dy;
-    const auto secantAt = [&](double r) {
+    // (ax, ay): p in the cell's own coordinates. Along the ray inside the cell
+    // z(r) - z(p) = A + B r + C r^2.
+    const auto consider = [&](double r) {
         const double fx = std::clamp(ax + dx * r, 0.0, 1.0);
         const double fy = std::clamp(ay + dy * r, 0.0, 1.0);
-        const double h = h00 + e1 * fx + e2 * fy + k * fx * fy;
-        return (m_scale * h - zp) / r;
+        const double g = m_scale * (h00 + e1 * fx + e2 * fy + k * fx * fy) - zp;
+        if (g > best * r)
+            best = g / r;
     };
-    double best = secantAt(rb);
-    if (ra <= 0.0)
-        return std::max(best, B); // the r -> 0+ limit: z(p) + B r + C r^2 is the surface there
-    best = std::max(best, secantAt(ra));
+    // The entry point was the previous cell's exit, or lies in a node shown not to rise enough.
+    consider(rb);
+    if (ra <= 0.0) {
+        // The r -> 0+ limit: the surface is z(p) + B r + C r^2 there.
+        const double B = m_scale * (e1 * dx + e2 * dy + k * (ax * dy + ay * dx));
+        return std::max(best, B);
+    }
     // (A + B r + C r^2) / r has an interior maximum only where A and C are both negative.
-    const double A = m_scale * (h00 + e1 * ax + e2 * ay + k * ax * ay) - zp;
-    if (A < 0.0 && C < 0.0) {
-        const double r = std::sqrt(A / C);
-        if (r > ra && r < rb)
-            best = std::max(best, secantAt(r));
+    const double C = m_scale * k * dx * dy;
+    if (C < 0.0) {
+        const double A = m_scale * (h00 + e1 * ax + e2 * ay + k * ax * ay) - zp;
+        if (A < 0.0) {
+            const double r = std::sqrt(A / C);
+            if (r > ra && r < rb)
+                consider(r);
+        }
     }
     return best;
 }
@@ -157,66 +177,71 @@ double HorizonSearch::horizon(int px, int py, double cosPhi, double sinPhi) cons
     const int W = m_field.width, H = m_field.height;
     const bool repeat = m_wrap == WrapMode::Repeat;
     const double dx = W * cosPhi, dy = -H * sinPhi; // texels per uv along the ray
+    const double invDx = 1.0 / dx, invDy = 1.0 / dy;
     const double zp = m_scale * m_field.at(px, py);
     const bool open = std::isinf(m_distance);
     const double rMax = open ? (repeat ? kOpenSkyReach : kInf) : m_distance;
     const double slack = open ? kOpenSkySlack : 0.0;
+    const double room = m_top - zp; // the most anything can rise above p
     double best = open ? 0.0 : -kInf;
 
+    // The cell (cx, cy) in extended coordinates, and the first cell of its period (baseX, baseY).
     int cx = firstCell(px, dx, m_cellsX, !repeat);
     int cy = firstCell(py, dy, m_cellsY, !repeat);
+    int baseX = repeat ? floorDiv(cx, m_cellsX) * m_cellsX : 0;
+    int baseY = repeat ? floorDiv(cy, m_cellsY) * m_cellsY : 0;
     const int top = static_cast<int>(m_levels.size());
     int level = 0;
     double r = 0.0;
     for (;;) {
-        if (r > 0.0 && (r >= rMax || (m_top - zp) / r <= best + slack))
+        if (r > 0.0 && (r >= rMax || room <= (best + slack) * r))
             return best;
         if (!repeat && (cx < 0 || cx >= m_cellsX || cy < 0 || cy >= m_cellsY))
             return clampedOutside(px, py, zp, dx, dy, r, best, rMax, cx < 0 || cx >= m_cellsX,
                                   cy < 0 || cy >= m_cellsY);
-        // The node of `level` holding cell (cx, cy), in extended coordinates.
-        const int periodX = repeat ? floorDiv(cx, m_cellsX) : 0;
-        const int periodY = repeat ? floorDiv(cy, m_cellsY) : 0;
-        const int nx = (cx - periodX * m_cellsX) >> level, ny = (cy - periodY * m_cellsY) >> level;
-        const int x0 = periodX * m_cellsX + (nx << level);
-        const int x1 = periodX * m_cellsX + std::min((nx + 1) << level, m_cellsX);
-        const int y0 = periodY * m_cellsY + (ny << level);
-        const int y1 = periodY * m_cellsY + std::min((ny + 1) << level, m_cellsY);
-        const double exitX = dx > 0.0 ? (x1 - px) / dx : (dx < 0.0 ? (x0 - px) / dx : kInf);
-        const double exitY = dy > 0.0 ? (y1 - py) / dy : (dy < 0.0 ? (y0 - py) / dy : kInf);
+        if (cx - baseX >= m_cellsX)
+            baseX += m_cellsX;
+        else if (cx < baseX)
+            baseX -= m_cellsX;
+        if (cy - baseY >= m_cellsY)
+            baseY += m_cellsY;
+        else if (cy < baseY)
+            baseY -= m_cellsY;
+        const int lx = cx - baseX, ly = cy - baseY;
+        // The node of `level` holding the cell, in extended coordinates.
+        const int nx = lx >> level, ny = ly >> level;
+        const int x0 = baseX + (nx << level), x1 = baseX + std::min((nx + 1) << level, m_cellsX);
+        const int y0 = baseY + (ny << level), y1 = baseY + std::min((ny + 1) << level, m_cellsY);
+        const double exitX = dx > 0.0 ? (x1 - px) * invDx : (dx < 0.0 ? (x0 - px) * invDx : kInf);
+        const double exitY = dy > 0.0 ? (y1 - py) * invDy : (dy < 0.0 ? (y0 - py) * invDy : kInf);
         const double exit = std::min(exitX, exitY);
         if (level > 0) {
             // Skip the node if no point of it can raise the horizon: its secant is at most
             // (max - z(p)) / r at the nearest r where that is positive, at the farthest otherwise.
             const double rise = m_scale * nodeMax(level, nx, ny) - zp;
             const bool skip = rise > 0.0 ? rise <= (best + slack) * r
-                                         : rise / std::min(exit, rMax) <= best + slack;
+                                         : rise <= (best + slack) * std::min(exit, rMax);
             if (!skip) {
                 --level;
                 continue;
             }
             level = std::min(level + 1, top);
         } else {
-            best = std::max(best, cellSecant(cx, cy, px, py, zp, dx, dy, r, std::min(exit, rMax)));
-            level = std::min(1, top);
+            best = cellSecant(lx, ly, px - cx, py - cy, zp, dx, dy, r, std::min(exit, rMax), best);
         }
         if (exit >= rMax)
             return best;
         // Step into the next cell: across the side it leaves by, and along the other to the cell
         // the exit point is in (kept inside the node so that rounding never steps back).
         const double ex = px + dx * exit, ey = py + dy * exit;
-        const int nextX = exitX <= exitY
-                              ? (dx > 0.0 ? x1 : x0 - 1)
-                              : std::clamp(dx > 0.0   ? static_cast<int>(std::floor(ex))
-                                           : dx < 0.0 ? static_cast<int>(std::ceil(ex)) - 1
-                                                      : cx,
-                                           x0, x1 - 1);
-        const int nextY = exitY <= exitX
-                              ? (dy > 0.0 ? y1 : y0 - 1)
-                              : std::clamp(dy > 0.0   ? static_cast<int>(std::floor(ey))
-                                           : dy < 0.0 ? static_cast<int>(std::ceil(ey)) - 1
-                                                      : cy,
-                                           y0, y1 - 1);
+        const int nextX = exitX <= exitY ? (dx > 0.0 ? x1 : x0 - 1)
+                                         : std::clamp(cellAhead(ex, dx, cx), x0, x1 - 1);
+        const int nextY = exitY <= exitX ? (dy > 0.0 ? y1 : y0 - 1)
+                                         : std::clamp(cellAhead(ey, dy, cy), y0, y1 - 1);
+        // After a cell, look at the level above only once the ray enters a new one of its nodes.
+        if (level == 0 && top > 0 &&
+            ((nextX - baseX) >> 1 != lx >> 1 || (nextY - baseY) >> 1 != ly >> 1))
+            level = 1;
         cx = nextX;
         cy = nextY;
         r = exit;

@@ -37,10 +37,10 @@ private:
 
     float texel(int x, int y) const; // resolved by the wrap mode
     float nodeMax(int level, int nx, int ny) const;
-    // The best secant over the cell with top-left texel (cx, cy) (extended coordinates) between
-    // ra and rb along the ray.
-    double cellSecant(int cx, int cy, int px, int py, double zp, double dx, double dy, double ra,
-                      double rb) const;
+    // max(best, the best secant over the cell at local coordinates (lx, ly) between ra and rb);
+    // (ax, ay): p in the cell's own coordinates.
+    double cellSecant(int lx, int ly, double ax, double ay, double zp, double dx, double dy,
+                      double ra, double rb, double best) const;
     // beyondX, beyondY: the cell the ray is in is beyond the map's cells along that axis.
     double clampedOutside(int px, int py, double zp, double dx, double dy, double r, double best,
                           double rMax, bool beyondX, bool beyondY) const;
