@@ -88,6 +88,8 @@ Result<OcclusionMaps> bakeOcclusion(const HeightField& field, const OcclusionBak
             if (stopped.load(std::memory_order_relaxed))
                 return;
             const int yUp = wrapIndex(y - 1, H, wrap), yDown = wrapIndex(y + 1, H, wrap);
+            // Per azimuth, where the previous texel's horizon was: tried first by the next.
+            std::vector<double> witness(dirs.size(), 0.0);
             for (int x = 0; x < W; ++x) {
                 const int xl = wrapIndex(x - 1, W, wrap), xr = wrapIndex(x + 1, W, wrap);
                 const double gu = centralDifference(field.at(xl, y), field.at(xr, y), x, W, wrap);
@@ -97,10 +99,11 @@ Result<OcclusionMaps> bakeOcclusion(const HeightField& field, const OcclusionBak
                 const double len = std::sqrt(s * s * (gu * gu + gv * gv) + 1.0);
                 const double nx = -s * gu / len, ny = s * gv / len, nz = 1.0 / len;
                 double occluded = 0.0, bx = 0.0, by = 0.0, bz = 0.0;
-                for (const Azimuth& d : dirs) {
+                for (std::size_t k = 0; k < dirs.size(); ++k) {
+                    const Azimuth& d = dirs[k];
                     // The tangent of the elevation where n . w = 0 (the slope of n's plane).
                     const double tNormal = s * (gu * d.cosine - gv * d.sine);
-                    const double tHorizon = search.horizon(x, y, d.cosine, d.sine);
+                    const double tHorizon = search.horizon(x, y, d.cosine, d.sine, &witness[k]);
                     if (!(tHorizon > tNormal + kPlaneMargin * (1.0 + std::abs(tNormal))))
                         continue;
                     const double a = nx * d.cosine + ny * d.sine;

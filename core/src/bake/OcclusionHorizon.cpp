@@ -90,8 +90,17 @@ float HorizonSearch::nodeMax(int level, int nx, int ny) const {
     return l.max[static_cast<std::size_t>(ny) * l.width + nx];
 }
 
+double HorizonSearch::surface(double x, double y) const {
+    const double fx = std::floor(x), fy = std::floor(y);
+    const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
+    const double tx = x - fx, ty = y - fy;
+    const double top = texel(ix, iy) * (1.0 - tx) + texel(ix + 1, iy) * tx;
+    const double bottom = texel(ix, iy + 1) * (1.0 - tx) + texel(ix + 1, iy + 1) * tx;
+    return top * (1.0 - ty) + bottom * ty;
+}
+
 double HorizonSearch::cellSecant(int lx, int ly, double ax, double ay, double zp, double dx,
-                                 double dy, double ra, double rb, double best) const {
+                                 double dy, double ra, double rb, double best, double& at) const {
     // Corners by local cell coordinates: with repeat the last cell's far side wraps to 0.
     const int W = m_field.width, H = m_field.height;
     const int lx1 = lx + 1 < W ? lx + 1 : 0, ly1 = ly + 1 < H ? ly + 1 : 0;
@@ -105,15 +114,21 @@ double HorizonSearch::cellSecant(int lx, int ly, double ax, double ay, double zp
         const double fx = std::clamp(ax + dx * r, 0.0, 1.0);
         const double fy = std::clamp(ay + dy * r, 0.0, 1.0);
         const double g = m_scale * (h00 + e1 * fx + e2 * fy + k * fx * fy) - zp;
-        if (g > best * r)
+        if (g > best * r) {
             best = g / r;
+            at = r;
+        }
     };
     // The entry point was the previous cell's exit, or lies in a node shown not to rise enough.
     consider(rb);
     if (ra <= 0.0) {
         // The r -> 0+ limit: the surface is z(p) + B r + C r^2 there.
         const double B = m_scale * (e1 * dx + e2 * dy + k * (ax * dy + ay * dx));
-        return std::max(best, B);
+        if (B > best) {
+            best = B;
+            at = 0.0;
+        }
+        return best;
     }
     // (A + B r + C r^2) / r has an interior maximum only where A and C are both negative.
     const double C = m_scale * k * dx * dy;
@@ -173,7 +188,7 @@ double HorizonSearch::clampedOutside(int px, int py, double zp, double dx, doubl
     return constant(profile(d > 0.0 ? n - 1 : 0), r);
 }
 
-double HorizonSearch::horizon(int px, int py, double cosPhi, double sinPhi) const {
+double HorizonSearch::horizon(int px, int py, double cosPhi, double sinPhi, double* witness) const {
     const int W = m_field.width, H = m_field.height;
     const bool repeat = m_wrap == WrapMode::Repeat;
     const double dx = W * cosPhi, dy = -H * sinPhi; // texels per uv along the ray
@@ -184,6 +199,20 @@ double HorizonSearch::horizon(int px, int py, double cosPhi, double sinPhi) cons
     const double slack = open ? kOpenSkySlack : 0.0;
     const double room = m_top - zp; // the most anything can rise above p
     double best = open ? 0.0 : -kInf;
+    double at = 0.0;
+    if (witness && *witness > 0.0 && *witness <= rMax) {
+        const double r = *witness;
+        const double g = m_scale * surface(px + dx * r, py + dy * r) - zp;
+        if (g > best * r) {
+            best = g / r;
+            at = r;
+        }
+    }
+    const auto found = [&](double tangent) {
+        if (witness)
+            *witness = at;
+        return tangent;
+    };
 
     // The cell (cx, cy) in extended coordinates, and the first cell of its period (baseX, baseY).
     int cx = firstCell(px, dx, m_cellsX, !repeat);
@@ -195,10 +224,10 @@ double HorizonSearch::horizon(int px, int py, double cosPhi, double sinPhi) cons
     double r = 0.0;
     for (;;) {
         if (r > 0.0 && (r >= rMax || room <= (best + slack) * r))
-            return best;
+            return found(best);
         if (!repeat && (cx < 0 || cx >= m_cellsX || cy < 0 || cy >= m_cellsY))
-            return clampedOutside(px, py, zp, dx, dy, r, best, rMax, cx < 0 || cx >= m_cellsX,
-                                  cy < 0 || cy >= m_cellsY);
+            return found(clampedOutside(px, py, zp, dx, dy, r, best, rMax, cx < 0 || cx >= m_cellsX,
+                                        cy < 0 || cy >= m_cellsY));
         if (cx - baseX >= m_cellsX)
             baseX += m_cellsX;
         else if (cx < baseX)
@@ -227,10 +256,11 @@ double HorizonSearch::horizon(int px, int py, double cosPhi, double sinPhi) cons
             }
             level = std::min(level + 1, top);
         } else {
-            best = cellSecant(lx, ly, px - cx, py - cy, zp, dx, dy, r, std::min(exit, rMax), best);
+            best =
+                cellSecant(lx, ly, px - cx, py - cy, zp, dx, dy, r, std::min(exit, rMax), best, at);
         }
         if (exit >= rMax)
-            return best;
+            return found(best);
         // Step into the next cell: across the side it leaves by, and along the other to the cell
         // the exit point is in (kept inside the node so that rounding never steps back).
         const double ex = px + dx * exit, ey = py + dy * exit;

@@ -26,8 +26,10 @@ public:
     HorizonSearch(const HeightField& field, WrapMode wrap, double heightScale, double distance);
 
     // The horizon's tangent from texel (x, y) along the uv-space direction (cos phi, sin phi) in
-    // (X, Y) = (u, -v).
-    double horizon(int x, int y, double cosPhi, double sinPhi) const;
+    // (X, Y) = (u, -v). `witness`, if given: in, a distance worth trying first (where a
+    // neighbour's horizon was, 0: none), which only speeds the search up (the surface there is a
+    // lower bound, so the skips prune more from the start); out, where this horizon was found.
+    double horizon(int x, int y, double cosPhi, double sinPhi, double* witness = nullptr) const;
 
 private:
     struct Level {
@@ -39,8 +41,10 @@ private:
     float nodeMax(int level, int nx, int ny) const;
     // max(best, the best secant over the cell at local coordinates (lx, ly) between ra and rb);
     // (ax, ay): p in the cell's own coordinates.
+    // `at`: where the best is, updated with it.
     double cellSecant(int lx, int ly, double ax, double ay, double zp, double dx, double dy,
-                      double ra, double rb, double best) const;
+                      double ra, double rb, double best, double& at) const;
+    double surface(double x, double y) const; // h at texel coordinates (x, y), wrapped or clamped
     // beyondX, beyondY: the cell the ray is in is beyond the map's cells along that axis.
     double clampedOutside(int px, int py, double zp, double dx, double dy, double r, double best,
                           double rMax, bool beyondX, bool beyondY) const;
