@@ -135,6 +135,7 @@ int run(int argc, char** argv) {
     add(addRenderCommand);
     add(addExportCommand);
     add(addBenchCommand);
+    add(addBenchAoCommand);
     add(addStabilityCommand);
     add(addBakeCommand);
     add(addRecommendCommand);

@@ -17,6 +17,7 @@ Action addShaderCommand(CLI::App& app);
 Action addRenderCommand(CLI::App& app);
 Action addExportCommand(CLI::App& app);
 Action addBenchCommand(CLI::App& app);
+Action addBenchAoCommand(CLI::App& app);
 Action addStabilityCommand(CLI::App& app);
 Action addBakeCommand(CLI::App& app);
 Action addRecommendCommand(CLI::App& app);

@@ -3,12 +3,14 @@
 
 #include "Cli.h"
 #include "CommonOptions.h"
+#include "DistanceOption.h"
 #include "parallax/export/BatchScan.h"
 #include "parallax/export/Exporter.h"
 #include "parallax/material/MapFileName.h"
 #include "parallax/material/MaterialFile.h"
 #include "parallax/material/MaterialNames.h"
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -35,6 +37,8 @@ struct ExportCliOptions {
     int normalBits = 8;
     std::string green = "opengl";
     ConeCacheOptions cache; // technique auto's bakes
+    bool bakeAo = false;
+    double aoDistance = INFINITY;
 };
 
 std::vector<std::string> names(std::span<const std::string_view> list) {
@@ -52,6 +56,8 @@ ExportOptions exportOptions(const ExportCliOptions& o, const std::string& out) {
     options.load.allowLarge = o.height.allowLarge;
     options.load.normalize = o.height.normalize;
     options.coneCacheDir = o.cache.folder();
+    options.bakeOcclusion = o.bakeAo;
+    options.occlusionDistance = o.aoDistance;
     return options;
 }
 
@@ -244,6 +250,14 @@ Action addExportCommand(CLI::App& app) {
         ->required();
     cmd->add_flag("--force", o->force, "Replace an earlier export in the output folder");
     o->cache.addTo(*cmd);
+    CLI::Option* bakeAo =
+        cmd->add_flag("--bake-ao", o->bakeAo,
+                      "Bake an occlusion map from the height map where the material has none "
+                      "(the exact bake, default directions); every format with an occlusion slot "
+                      "carries it");
+    addDistanceOption(*cmd, "--ao-distance", o->aoDistance,
+                      "With --bake-ao: how far a blocker may be, uv units, or inf (default)")
+        ->needs(bakeAo);
     cmd->add_option("--height-bits", o->heightBits, "Height map: 16 (PNG) or 32 (float EXR)")
         ->check(CLI::IsMember({16, 32}));
     cmd->add_option("--normal-bits", o->normalBits, "Normal map: 8 or 16-bit PNG")

@@ -16,4 +16,11 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/RecommendationText.cpp
   ${CMAKE_CURRENT_LIST_DIR}/EngineLayers.cpp
   ${CMAKE_CURRENT_LIST_DIR}/AutoTechnique.cpp
+  # The peers' occlusion methods (PeerOcclusion.h) and the occlusion bench.
+  ${CMAKE_CURRENT_LIST_DIR}/peers/PeerSurface.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/peers/HbaoOcclusion.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/peers/MaxOfSineOcclusion.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/peers/SsaoSumOcclusion.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/peers/RayMarchOcclusion.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/OcclusionBench.cpp
 )

@@ -62,6 +62,7 @@ Status writeUnreal(ExportJob& job) {
             return s;
         note << "  " << base << "_ORM.png   R = Ambient Occlusion, G = Roughness, B = Metallic: "
              << "Compression Masks, sRGB off\n";
+        job.noteOcclusion("R of " + base + "_ORM.png (Ambient Occlusion)");
     }
     const bool specular = !job.assets.specular.empty();
     const bool tinted =
@@ -171,6 +172,8 @@ Status writeUnity(ExportJob& job) {
                 !s)
                 return s;
             note << "  " << base << "_Occlusion.png           sRGB off (Built-in Standard, URP)\n";
+            job.noteOcclusion("G of " + base + "_MaskMap.png (HDRP Lit) and " + base +
+                              "_Occlusion.png (Built-in Standard, URP Lit)");
         }
     }
     const bool parallax = info(m.technique).parallax;

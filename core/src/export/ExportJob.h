@@ -25,6 +25,8 @@ struct ExportJob {
     // Technique "auto" for Godot and Unity: the layer counts the engine's own march needs
     // (EngineLayers.h).
     std::optional<EngineLayersAdvice> engineLayers = std::nullopt;
+    // Where assets.ao came from, for the notes: its file's name, or "baked here".
+    std::string occlusionSource = {};
 
     // Writes into the export folder and records the file. Errors name the file.
     Status image(const std::string& name, const Image& image, PixelFormat format,
@@ -48,6 +50,10 @@ struct ExportJob {
     // map: 1. nullopt when the material has none of the three maps.
     enum class MissingChannel { One, Number };
     std::optional<Image> orm(MissingChannel missing) const;
+
+    // Notes where the occlusion map went ("R of bricks_orm.png, glTF's occlusionTexture"), when
+    // there is one.
+    void noteOcclusion(const std::string& where);
 
     // The cone map of `kind`: the loaded one, or baked from the height map (with a note).
     ConeMap cones(ConeKind kind);

@@ -8,12 +8,15 @@
 #include "io/ShortestDecimal.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/NormalMapBaker.h"
+#include "parallax/bake/OcclusionBaker.h"
 #include "parallax/eval/AutoTechnique.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/io/Inputs.h"
 #include "parallax/material/MaterialFile.h"
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 namespace px {
 
@@ -150,6 +153,12 @@ std::optional<Image> ExportJob::orm(MissingChannel missing) const {
     return packChannels(sources, 3, material.wrap);
 }
 
+void ExportJob::noteOcclusion(const std::string& where) {
+    if (assets.ao.empty())
+        return;
+    result.notes.push_back("occlusion map (" + occlusionSource + ") in " + where);
+}
+
 ConeMap ExportJob::cones(ConeKind kind) {
     const ConeMap& loaded = kind == ConeKind::Conservative ? assets.cone : assets.relaxedCone;
     if (!loaded.sqrtRatio.empty())
@@ -174,9 +183,45 @@ MapSet mapsFor(const Material& m, ExportFormat format) {
     return set;
 }
 
-// Technique "auto" measures the cone techniques on the material's own cone maps where it has them.
-MapSet mapsToLoad(const Material& m, ExportFormat format) {
-    return m.autoQuality ? withAutoInputs(m, mapsFor(m, format)) : mapsFor(m, format);
+// Technique "auto" measures the cone techniques on the material's own cone maps where it has them;
+// an occlusion bake reads the height map.
+MapSet mapsToLoad(const Material& m, const ExportOptions& options) {
+    MapSet set =
+        m.autoQuality ? withAutoInputs(m, mapsFor(m, options.format)) : mapsFor(m, options.format);
+    if (options.bakeOcclusion && m.maps.ao.empty())
+        set.height = set.height || !m.maps.height.empty();
+    return set;
+}
+
+// The occlusion map the export carries: the material's own, or (asked for, where it has none)
+// one baked from the height map. Returns where it came from, for the notes.
+Result<std::string> occlusionFor(const Material& m, const ExportOptions& options,
+                                 MaterialAssets& assets, std::vector<std::string>& notes) {
+    if (!m.maps.ao.empty())
+        return std::filesystem::path(m.maps.ao).filename().string();
+    if (!options.bakeOcclusion)
+        return std::string();
+    if (assets.height.empty()) {
+        notes.push_back("no occlusion map baked: the material has no height map");
+        return std::string();
+    }
+    OcclusionBakeOptions bake;
+    bake.heightScale = m.heightScale;
+    bake.wrap = m.wrap;
+    bake.distance = options.occlusionDistance;
+    Result<OcclusionMaps> maps =
+        bakeOcclusion(assets.height, bake, OcclusionOutputs::AmbientOcclusion);
+    if (!maps)
+        return maps.error().prefixed("baking the occlusion map: ");
+    assets.ao = std::move(maps->occlusion);
+    notes.push_back("occlusion map baked from the height map (" +
+                    std::to_string(occlusionDirections(bake)) + " directions, distance " +
+                    (std::isfinite(bake.distance)
+                         ? exporter::formatDecimal(static_cast<float>(bake.distance)) + " uv"
+                         : std::string("unlimited")) +
+                    ", height scale " + exporter::formatDecimal(m.heightScale) + ", " +
+                    std::string(toString(m.wrap)) + ")");
+    return std::string("baked here");
 }
 
 // The engine whose own march an "auto" export sizes (Unreal's is not published: none).
@@ -204,10 +249,14 @@ Result<ExportResult> exportMaterial(const Material& material, const std::string&
     if (std::vector<MaterialProblem> problems = validateMaterial(material); !problems.empty())
         return Error{formatProblems(problems, materialFile.empty() ? material.name : materialFile)};
     // Everything that can fail on the input fails before the output folder is touched.
-    Result<MaterialAssets> assets = loadMaterialAssets(
-        material, materialFile, mapsToLoad(material, options.format), options.load);
+    Result<MaterialAssets> assets =
+        loadMaterialAssets(material, materialFile, mapsToLoad(material, options), options.load);
     if (!assets)
         return assets.error();
+    std::vector<std::string> occlusionNotes;
+    Result<std::string> occlusion = occlusionFor(material, options, *assets, occlusionNotes);
+    if (!occlusion)
+        return occlusion.error();
     Result<ExportFolder> folder = ExportFolder::begin(options.outDir, options.force);
     if (!folder)
         return folder.error();
@@ -236,6 +285,7 @@ Result<ExportResult> exportMaterial(const Material& material, const std::string&
                                " are written as 0 to 1, as engines read heights; the height "
                                "scale is the depth of that whole range");
     }
+    result.notes.insert(result.notes.end(), occlusionNotes.begin(), occlusionNotes.end());
     exporter::ExportJob job{resolved->material,
                             options,
                             std::move(*assets),
@@ -243,7 +293,8 @@ Result<ExportResult> exportMaterial(const Material& material, const std::string&
                             result,
                             exporter::fileStem(material.name),
                             materialFile,
-                            std::move(resolved->engineLayers)};
+                            std::move(resolved->engineLayers),
+                            *occlusion};
     Status written = success();
     switch (options.format) {
     case ExportFormat::Package:

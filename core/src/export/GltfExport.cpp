@@ -150,8 +150,10 @@ Status writeGltf(ExportJob& job) {
         if (Status s = job.image(name, *orm, PixelFormat::UInt8); !s)
             return s;
         pbr["metallicRoughnessTexture"] = texture(name);
-        if (!job.assets.ao.empty()) // glTF reads occlusion from R of the same texture
+        if (!job.assets.ao.empty()) { // glTF reads occlusion from R of the same texture
             material["occlusionTexture"] = {{"index", textures.size() - 1}};
+            job.noteOcclusion("R of " + name + ", the material's occlusionTexture");
+        }
     }
     material["pbrMetallicRoughness"] = pbr;
     const std::string normalName = job.stem + "_normal.png";

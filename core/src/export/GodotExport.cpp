@@ -68,8 +68,10 @@ Status writeGodot(ExportJob& job) {
         // Texture channels: 0 red, 1 green, 2 blue (BaseMaterial3D::TextureChannel).
         props << "metallic_texture = " << ref << "\nmetallic_texture_channel = 2\n"
               << "roughness_texture = " << ref << "\nroughness_texture_channel = 1\n";
-        if (!job.assets.ao.empty())
+        if (!job.assets.ao.empty()) {
             props << "ao_enabled = true\nao_texture = " << ref << "\nao_texture_channel = 0\n";
+            job.noteOcclusion("R of " + name + " (ao_texture, channel red)");
+        }
     }
     const std::string normalName = job.stem + "_normal.png";
     Result<bool> normals = job.writeNormals(normalName, NormalGreen::OpenGL);

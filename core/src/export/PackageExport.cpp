@@ -119,7 +119,9 @@ Status writePackage(ExportJob& job) {
         {&job.assets.roughness, &out.maps.roughness},
         {&job.assets.metallic, &out.maps.metallic}};
     const char* linearNames[] = {"ao", "roughness", "metallic"};
-    const bool linearUsed[] = {used.ao, used.roughness, used.metallic};
+    // Occlusion darkens either lighting model: a baked one goes out as a loaded one would.
+    const bool linearUsed[] = {used.ao || !job.occlusionSource.empty(), used.roughness,
+                               used.metallic};
     for (int i = 0; i < 3; ++i) {
         if (!linearUsed[i] || linear[i].first->empty())
             continue;
@@ -128,6 +130,8 @@ Status writePackage(ExportJob& job) {
             return s;
         *linear[i].second = name;
         add(name, std::string(linearNames[i]) + ", 8-bit linear");
+        if (i == 0)
+            job.noteOcclusion(name + " (the package's shader darkens ambient light by it)");
     }
 
     if (!m.maps.specular.empty())

@@ -8,6 +8,7 @@
 #include "parallax/material/MaterialAssets.h"
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,11 @@ struct ExportOptions {
     PixelFormat normalFormat = PixelFormat::UInt8;
     NormalGreen packageGreen = NormalGreen::OpenGL; // the package's normal map convention
     AssetLoadOptions load;
+    // Bake an occlusion map from the height map where the material has none (as a missing normal
+    // map is baked): the exact bake (parallax/bake/OcclusionBaker.h) at the material's height
+    // scale and wrap, default directions, this horizontal uv distance (+inf: unlimited).
+    bool bakeOcclusion = false;
+    double occlusionDistance = std::numeric_limits<double>::infinity();
     // Where resolving technique "auto" keeps the cone maps it bakes between runs (empty: none).
     std::string coneCacheDir;
 };
@@ -34,7 +40,8 @@ struct ExportResult {
 };
 
 // Loads the maps the target needs (paths relative to `materialFile`), converts them (bit depth,
-// green convention, channel packing, cone maps baked when the material has none), writes them and
+// green convention, channel packing, cone maps baked when the material has none, occlusion baked
+// when asked), writes them and
 // the target's material description into `options.outDir` as one atomic folder. Errors name the
 // file or the folder and the problem; on failure nothing is left behind.
 Result<ExportResult> exportMaterial(const Material& material, const std::string& materialFile,
