@@ -1,15 +1,10 @@
 #pragma once
-// The one gate every rename and delete of the project goes through (docs/cli.md, "Nothing lost").
-// It replaces only regular files that are not inputs of this run (Inputs.h: by identity, so hard
-// links and other spellings are caught), never a folder, a FIFO, a device, a socket or a symbolic
-// link. A single file named through a symbolic link is written through it (outputTarget): the
-// link's target, a regular file, is replaced atomically and the link stays a link; a link to
-// nothing or to a special file is refused. Every act is relative to a folder the run opened
-// (renameat, unlinkat, AT_SYMLINK_NOFOLLOW), so a link swapped in between a check and the act
-// cannot redirect it. It deletes only regular files a caller owns (this run's temporaries, an
-// earlier export's listed files, cache entries), never an input; the signal handler's and the
-// leftover sweep's removals (Temporaries.cpp) are the one other place. `build.OnlyTheGateDeletes`
-// checks that no other code deletes.
+// The one gate every rename and delete goes through (docs/cli.md, "Nothing lost"): it replaces
+// only regular files that are not inputs of this run (Inputs.h, by identity), never a folder, a
+// special file or a link; a single file named through a link is written through it (outputTarget).
+// Every act is relative to a folder the run opened (renameat, unlinkat, AT_SYMLINK_NOFOLLOW), so a
+// link swapped in cannot redirect it. Temporaries.cpp (signal handler, leftover sweep) is the one
+// other place that deletes; `build.OnlyTheGateDeletes` checks that no other code does.
 
 #include "parallax/Result.h"
 

@@ -1,18 +1,12 @@
 #pragma once
-// Several files written as one (an export folder, a turntable's frames, every shader variant): an
-// interruption leaves no debris and never half a file, and nothing needs finishing later.
-//
-// The files are written into a stage folder this run creates (mkdirat) on the
-// device of the folder they go into (Temporaries.h names it; the run holds its lock and Ctrl-C
-// removes it with its files). Then:
-// - a folder that did not exist is the stage, made beside it and renamed into place: atomic;
-// - files that go into an existing folder (frames among the user's files, an earlier export
-//   updated in place keeping an engine's .meta and .import files, a folder that is a mount point)
-//   are staged inside that folder and renamed one by one, in an order the caller chooses so that
-//   any prefix is a consistent state (an export's manifest first as the union of the old and new
-//   lists, last as the new one). Ctrl-C and SIGTERM wait for the last rename. After SIGKILL or a
-//   power cut the renamed files are whole new files, the rest whole old ones, and the stage is a
-//   dead run's leftover that the next run removes: no journal, nothing found on disk obeyed.
+// Several files written as one (an export folder, a turntable's frames, every shader variant),
+// staged in a folder this run creates on the device of the folder they go into (Temporaries.h
+// names it; the run holds its lock; Ctrl-C removes it). A folder that did not exist is the stage,
+// made beside it and renamed into place; files going into an existing folder (among the user's
+// files, an earlier export keeping an engine's .meta files, a mount point) are staged inside it and
+// renamed one by one in an order where any prefix is consistent, Ctrl-C waiting for the last.
+// After SIGKILL every file is whole, old or new, and the stage is a dead run's leftover that the
+// next run removes: no journal, nothing found on disk obeyed.
 
 #include "parallax/Result.h"
 #include "parallax/io/OutputGate.h"
