@@ -7,6 +7,7 @@
 
 #include "Cli.h"
 #include "CommonOptions.h"
+#include "MeshBakeCommand.h"
 #include "ProgressLine.h"
 #include "parallax/bake/BakeEncoding.h"
 #include "parallax/bake/ConeMapBaker.h"
@@ -41,6 +42,7 @@ struct BakeOptions {
     int level = -1;
     bool gpu = false;
     std::string out;
+    MeshBakeCli mesh; // bake height|normal|ao --mesh (MeshBakeCommand.h)
 };
 
 // The pixel format from --bits and the extension, checked before any work is done.
@@ -168,6 +170,18 @@ Result<Image> bakePyramid(const BakeOptions& o, PixelFormat format) {
 }
 
 int runBake(const BakeOptions& o, const CLI::App& cmd) {
+    if (o.mesh.asked(o.kind)) {
+        if (o.kind != "height" && o.kind != "normal" && o.kind != "ao")
+            return fail("bake " + o.kind +
+                        " bakes from a height map; a --mesh bakes height, "
+                        "normal or ao");
+        Result<PixelFormat> format = outputFormat(o);
+        if (!format)
+            return fail(format.error().message);
+        return runMeshBake(o.mesh, {o.kind, o.height.wrap, o.green, *format, o.out}, cmd);
+    }
+    if (Status s = o.mesh.checkNotGiven(o.kind, cmd); !s)
+        return fail(s.error().message);
     if (Status s = checkApplicable(o, cmd); !s)
         return fail(s.error().message);
     Result<PixelFormat> format = outputFormat(o);
@@ -200,10 +214,13 @@ int runBake(const BakeOptions& o, const CLI::App& cmd) {
 Action addBakeCommand(CLI::App& app) {
     auto o = std::make_shared<BakeOptions>();
     CLI::App* cmd = app.add_subcommand(
-        "bake", "Bake a normal, cone, relaxed cone or max-mip map from a height map");
-    cmd->add_option("kind", o->kind, "normal, cone, relaxed-cone or pyramid")
+        "bake", "Bake a normal, cone, relaxed cone or max-mip map from a height map, or height, "
+                "normal and occlusion maps from a sculpted tile (--mesh)");
+    cmd->add_option("kind", o->kind,
+                    "normal, cone, relaxed-cone or pyramid from a height map; height, normal or "
+                    "ao from a --mesh")
         ->required()
-        ->check(CLI::IsMember({"normal", "cone", "relaxed-cone", "pyramid"}));
+        ->check(CLI::IsMember({"height", "normal", "ao", "cone", "relaxed-cone", "pyramid"}));
     o->height.addTo(*cmd, false);
     cmd->add_option("--scale", o->scale,
                     "normal: height scale s in uv units (the material's height_scale)")
@@ -228,6 +245,7 @@ Action addBakeCommand(CLI::App& app) {
     cmd->add_flag("--gpu", o->gpu,
                   "cone, relaxed-cone: bake on the GPU (the same kernels, the same map; an "
                   "error where no OpenGL 4.3 context can be made)");
+    o->mesh.addTo(*cmd);
     cmd->add_option("--out", o->out, "Output image: .png, .tif or .exr (format from the extension)")
         ->required();
     return [o, cmd] { return runBake(*o, *cmd); };
