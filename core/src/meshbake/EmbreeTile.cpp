@@ -45,7 +45,10 @@ Result<EmbreeTile> EmbreeTile::make(const BakeMesh& mesh, const std::vector<glm:
     };
 
     tile.m_mesh = rtcNewScene(tile.m_device);
-    rtcSetSceneFlags(tile.m_mesh, RTC_SCENE_FLAG_ROBUST);
+    // Compact: leaves that index the shared vertices instead of copying them. On a 2M-triangle
+    // tile it took the peak from 323 to 197 MB at the same speed (docs/bakers.md).
+    rtcSetSceneFlags(tile.m_mesh,
+                     static_cast<RTCSceneFlags>(RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT));
     RTCGeometry triangles = rtcNewGeometry(tile.m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
     // The loaded arrays themselves: BakeMesh pads positions with one float for Embree's 16-byte
     // reads.

@@ -3,7 +3,7 @@
 // vertex and index buffers are the BakeMesh's own arrays (shared, not copied), and a top-level
 // scene holding it as instances translated by whole tiles: one for clamp, 3 x 3 for repeat (the
 // hit's instID says which copy). Both scenes are robust (watertight on shared edges: a grid mesh
-// aligned with the texels puts rays exactly on its edges).
+// aligned with the texels puts rays exactly on its edges), the mesh's compact.
 
 #include "parallax/Result.h"
 #include "parallax/meshbake/BakeMesh.h"
