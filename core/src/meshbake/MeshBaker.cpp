@@ -172,7 +172,8 @@ public:
             packet.dir_y[queued] = d.y;
             packet.dir_z[queued] = d.z;
             packet.tnear[queued] = 0.0f;
-            packet.tfar[queued] = reach;
+            // A ray that climbs above the mesh's top meets nothing more: it ends there.
+            packet.tfar[queued] = d.z > 0.0f ? std::min(reach, (m_frame.top - o.z) / d.z) : reach;
             packet.time[queued] = 0.0f;
             packet.mask[queued] = 0xFFFFFFFFu;
             packet.id[queued] = 0;
