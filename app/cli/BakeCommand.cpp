@@ -1,4 +1,5 @@
-// parallax-cli bake normal|cone|relaxed-cone|pyramid: the bakers of core/bake as files.
+// parallax-cli bake normal|cone|relaxed-cone|pyramid|ao|bent-normal: the bakers of core/bake as
+// files.
 //
 // Every bake is checked before it starts (options, output type, output folder), shows progress
 // on stderr once it has run for a second, stops at once on Ctrl-C (Interrupt.h), and writes
@@ -13,14 +14,18 @@
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/MaxMipPyramid.h"
 #include "parallax/bake/NormalMapBaker.h"
+#include "parallax/bake/OcclusionBaker.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/FileExtension.h"
 #include "parallax/material/MaterialNames.h"
 #include "parallax/render/GpuConeBaker.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -41,16 +46,23 @@ struct BakeOptions {
     std::string layout = "atlas";
     int level = -1;
     bool gpu = false;
+    std::string distance = "inf"; // ao, bent-normal: D in uv, or inf
+    int directions = 0;           // ao, bent-normal: azimuths (0: the default)
     std::string out;
     MeshBakeCli mesh; // bake height|normal|ao --mesh (MeshBakeCommand.h)
 };
+
+bool isOcclusion(const std::string& kind) {
+    return kind == "ao" || kind == "bent-normal";
+}
 
 // The pixel format from --bits and the extension, checked before any work is done.
 Result<PixelFormat> outputFormat(const BakeOptions& o) {
     const std::string ext = lowerExtension(o.out);
     if (ext != ".png" && ext != ".tif" && ext != ".tiff" && ext != ".exr")
         return fileError(o.out, "unknown output type '" + ext + "': use .png, .tif or .exr");
-    const int bits = o.bits.value_or(ext == ".exr" ? 32 : (o.kind == "normal" ? 8 : 16));
+    const bool eightBit = o.kind == "normal" || o.kind == "bent-normal";
+    const int bits = o.bits.value_or(ext == ".exr" ? 32 : (eightBit ? 8 : 16));
     Result<PixelFormat> format = pixelFormatFromBits(bits);
     if (!format)
         return format;
@@ -75,13 +87,17 @@ Status checkApplicable(const BakeOptions& o, const CLI::App& cmd) {
         bool allowed;
     };
     const bool normal = o.kind == "normal", pyramid = o.kind == "pyramid";
+    const bool occlusion = isOcclusion(o.kind), bent = o.kind == "bent-normal";
     for (const Rule& r :
-         {Rule{"--scale", normal}, Rule{"--filter", normal}, Rule{"--green", normal},
-          Rule{"--normal", normal}, Rule{"--normal-green", normal}, Rule{"--layout", pyramid},
-          Rule{"--level", pyramid}, Rule{"--gpu", !normal && !pyramid}}) {
+         {Rule{"--scale", normal || occlusion}, Rule{"--filter", normal},
+          Rule{"--green", normal || bent}, Rule{"--normal", normal}, Rule{"--normal-green", normal},
+          Rule{"--layout", pyramid}, Rule{"--level", pyramid}, Rule{"--distance", occlusion},
+          Rule{"--directions", occlusion}, Rule{"--gpu", !normal && !pyramid}}) {
         if (!r.allowed && cmd.count(r.option) > 0)
             return Error{std::string(r.option) + " does not apply to bake " + o.kind};
     }
+    if (occlusion && cmd.count("--gpu") > 0)
+        return Error{"--gpu: bake " + o.kind + " runs on the CPU only so far (leave out --gpu)"};
     if (o.normal.empty() && o.height.file.empty())
         return Error{"bake " + o.kind + " needs --height FILE" +
                      (normal ? " (or --normal FILE)" : "")};
@@ -156,6 +172,41 @@ Result<Image> bakeCones(const BakeOptions& o, PixelFormat format, const BakeCont
     return encodeConeMap(field, std::move(*cones), format);
 }
 
+// D from --distance: a number > 0 (uv) or inf; anything else is an error, never clamped.
+Result<double> occlusionDistance(const std::string& text) {
+    if (text == "inf")
+        return std::numeric_limits<double>::infinity();
+    std::size_t used = 0;
+    double d = 0.0;
+    try {
+        d = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || !std::isfinite(d) || !(d > 0.0))
+        return Error{"--distance " + text + ": give a distance > 0 in uv units, or inf"};
+    return d;
+}
+
+Result<Image> bakeOcclusionMap(const BakeOptions& o, double distance, const BakeControl& control) {
+    Result<HeightField> field = o.height.load();
+    if (!field)
+        return field.error();
+    OcclusionBakeOptions options;
+    options.heightScale = o.scale;
+    options.distance = distance;
+    options.directions = o.directions;
+    options.wrap = o.height.wrapMode();
+    options.green = *parseNormalGreen(o.green);
+    const bool ao = o.kind == "ao";
+    Result<OcclusionMaps> maps = bakeOcclusion(
+        *field, options, ao ? OcclusionOutputs::AmbientOcclusion : OcclusionOutputs::BentNormals,
+        control);
+    if (!maps)
+        return maps.error();
+    return ao ? std::move(maps->occlusion) : std::move(maps->bentNormals);
+}
+
 Result<Image> bakePyramid(const BakeOptions& o, PixelFormat format) {
     Result<HeightField> field = o.height.load();
     if (!field)
@@ -178,7 +229,12 @@ int runBake(const BakeOptions& o, const CLI::App& cmd) {
         Result<PixelFormat> format = outputFormat(o);
         if (!format)
             return fail(format.error().message);
-        return runMeshBake(o.mesh, {o.kind, o.height.wrap, o.green, *format, o.out}, cmd);
+        // --distance is the occlusion bakes' own option: here in the mesh's units.
+        const Result<double> distance = occlusionDistance(o.distance);
+        if (!distance)
+            return fail(distance.error().message);
+        return runMeshBake(o.mesh, {o.kind, o.height.wrap, o.green, *format, o.out, *distance},
+                           cmd);
     }
     if (Status s = o.mesh.checkNotGiven(o.kind, cmd); !s)
         return fail(s.error().message);
@@ -187,6 +243,9 @@ int runBake(const BakeOptions& o, const CLI::App& cmd) {
     Result<PixelFormat> format = outputFormat(o);
     if (!format)
         return fail(format.error().message);
+    const Result<double> distance = occlusionDistance(o.distance);
+    if (!distance)
+        return fail(distance.error().message);
 
     Result<Image> image = Error{""};
     {
@@ -197,6 +256,8 @@ int runBake(const BakeOptions& o, const CLI::App& cmd) {
             image = bakeNormal(o, control);
         else if (o.kind == "pyramid")
             image = bakePyramid(o, *format);
+        else if (isOcclusion(o.kind))
+            image = bakeOcclusionMap(o, *distance, control);
         else
             image = bakeCones(o, *format, control);
     }
@@ -214,21 +275,25 @@ int runBake(const BakeOptions& o, const CLI::App& cmd) {
 Action addBakeCommand(CLI::App& app) {
     auto o = std::make_shared<BakeOptions>();
     CLI::App* cmd = app.add_subcommand(
-        "bake", "Bake a normal, cone, relaxed cone or max-mip map from a height map, or height, "
-                "normal and occlusion maps from a sculpted tile (--mesh)");
+        "bake", "Bake a normal, cone, relaxed cone, max-mip, ambient occlusion or bent normal map "
+                "from a height map, or height, normal and occlusion maps from a sculpted tile "
+                "(--mesh)");
     cmd->add_option("kind", o->kind,
-                    "normal, cone, relaxed-cone or pyramid from a height map; height, normal or "
-                    "ao from a --mesh")
+                    "normal, cone, relaxed-cone, pyramid, ao or bent-normal from a height map; "
+                    "height, normal or ao from a --mesh")
         ->required()
-        ->check(CLI::IsMember({"height", "normal", "ao", "cone", "relaxed-cone", "pyramid"}));
+        ->check(CLI::IsMember(
+            {"height", "normal", "cone", "relaxed-cone", "pyramid", "ao", "bent-normal"}));
     o->height.addTo(*cmd, false);
     cmd->add_option("--scale", o->scale,
-                    "normal: height scale s in uv units (the material's height_scale)")
+                    "normal, ao, bent-normal: height scale s in uv units (the material's "
+                    "height_scale)")
         ->check(CLI::Range(0.0f, 100.0f));
     std::vector<std::string> filters(normalFilterNames().begin(), normalFilterNames().end());
     cmd->add_option("--filter", o->filter, "normal: derivative filter (default sobel)")
         ->check(CLI::IsMember(filters));
-    cmd->add_option("--green", o->green, "normal: green of the output, opengl (Y+) or directx (Y-)")
+    cmd->add_option("--green", o->green,
+                    "normal, bent-normal: green of the output, opengl (Y+) or directx (Y-)")
         ->check(CLI::IsMember({"opengl", "directx"}));
     cmd->add_option("--normal", o->normal,
                     "normal: pass a loaded normal map through instead of baking one");
@@ -236,12 +301,19 @@ Action addBakeCommand(CLI::App& app) {
                     "normal: green of the --normal map (auto: told from --height)")
         ->check(CLI::IsMember({"auto", "opengl", "directx"}));
     cmd->add_option("--bits", o->bits,
-                    "8, 16 or 32 (float); default 32 for .exr, else 8 (normal) or 16")
+                    "8, 16 or 32 (float); default 32 for .exr, else 8 (normal, bent-normal) or 16")
         ->check(CLI::IsMember({8, 16, 32}));
     cmd->add_option("--layout", o->layout,
                     "pyramid: atlas (every level stacked, for the GPU) or chain (for looking at)")
         ->check(CLI::IsMember({"atlas", "chain"}));
     cmd->add_option("--level", o->level, "pyramid: write one level only")->check(CLI::Range(0, 64));
+    cmd->add_option("--distance", o->distance,
+                    "ao, bent-normal: how far (uv; with --mesh, mesh units) a blocker may be; inf "
+                    "(default): unlimited");
+    cmd->add_option("--directions", o->directions,
+                    "ao, bent-normal: azimuths (default " +
+                        std::to_string(kDefaultOcclusionDirections) + ")")
+        ->check(CLI::Range(1, kMaxOcclusionDirections));
     cmd->add_flag("--gpu", o->gpu,
                   "cone, relaxed-cone: bake on the GPU (the same kernels, the same map; an "
                   "error where no OpenGL 4.3 context can be made)");

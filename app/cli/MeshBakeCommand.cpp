@@ -23,11 +23,11 @@ namespace fs = std::filesystem;
 
 // Options of the bakes from a height map: an error on a mesh bake, never silently ignored.
 constexpr const char* kHeightMapOptions[] = {
-    "--height", "--invert", "--normalize",    "--allow-large", "--channel", "--scale",
-    "--filter", "--normal", "--normal-green", "--layout",      "--level",   "--gpu"};
-constexpr const char* kMeshOptions[] = {"--mesh-root", "--tile",     "--up",
-                                        "--range",     "--size",     "--samples",
-                                        "--rays",      "--distance", "--material"};
+    "--height", "--invert", "--normalize", "--allow-large",  "--channel",
+    "--scale",  "--filter", "--normal",    "--normal-green", "--layout",
+    "--level",  "--gpu",    "--directions"};
+constexpr const char* kMeshOptions[] = {"--mesh-root", "--tile",    "--up",   "--range",
+                                        "--size",      "--samples", "--rays", "--material"};
 
 // "a,b,c": exactly `count` finite decimal numbers.
 Result<std::vector<double>> numbers(const std::string& text, std::size_t count,
@@ -140,14 +140,12 @@ void MeshBakeCli::addTo(CLI::App& command) {
         ->check(CLI::Range(1, 16));
     command.add_option("--rays", rays, "ao from a mesh: rays per texel (default 64)")
         ->check(CLI::Range(1, 4096));
-    command.add_option("--distance", distance,
-                       "ao from a mesh: how far rays see, in mesh units (default unlimited)");
     command.add_option("--material", material,
                        "mesh: write (or update) a material JSON with the map and the height scale");
 }
 
 bool MeshBakeCli::asked(const std::string& kind) const {
-    return !mesh.empty() || kind == "height" || kind == "ao";
+    return !mesh.empty() || kind == "height";
 }
 
 Status MeshBakeCli::checkNotGiven(const std::string& kind, const CLI::App& command) const {
@@ -170,8 +168,6 @@ int runMeshBake(const MeshBakeCli& m, const MeshBakeOutput& o, const CLI::App& c
         return fail("--rays and --distance apply to bake ao, not to bake " + o.kind);
     if (o.kind != "normal" && command.count("--green") > 0)
         return fail("--green applies to bake normal, not to bake " + o.kind);
-    if (m.distance && !(*m.distance > 0.0 && std::isfinite(*m.distance)))
-        return fail("--distance: expected a distance greater than 0");
 
     MeshBakeOptions options;
     Result<std::pair<int, int>> size = parseSize(m.size);
@@ -181,7 +177,7 @@ int runMeshBake(const MeshBakeCli& m, const MeshBakeOutput& o, const CLI::App& c
     options.height = size->second;
     options.samples = m.samples;
     options.rays = m.rays;
-    options.distance = m.distance.value_or(options.distance);
+    options.distance = o.distance;
     options.wrap = parseWrapMode(o.wrap).value_or(WrapMode::Repeat);
     options.green = o.green == "directx" ? NormalGreen::DirectX : NormalGreen::OpenGL;
     options.maps = {o.kind == "height", o.kind == "normal", o.kind == "ao"};

@@ -20,14 +20,13 @@ struct MeshBakeCli {
     std::string size = "1024";
     int samples = 1;
     int rays = 64;
-    std::optional<double> distance;
     std::string material;
     std::string root; // --mesh-root: the folder the mesh's references must lie under
 
-    // Adds --mesh, --mesh-root, --tile, --up, --range, --size, --samples, --rays, --distance,
-    // --material.
+    // Adds --mesh, --mesh-root, --tile, --up, --range, --size, --samples, --rays, --material
+    // (--distance is the bake command's, shared with the height-map occlusion bakes).
     void addTo(CLI::App& command);
-    // Whether this is a bake from a mesh (--mesh given, or a kind only meshes bake).
+    // Whether this is a bake from a mesh (--mesh given, or height, which only meshes bake).
     bool asked(const std::string& kind) const;
     // An error naming the first mesh-only option given to a bake from a height map.
     Status checkNotGiven(const std::string& kind, const CLI::App& command) const;
@@ -40,6 +39,7 @@ struct MeshBakeOutput {
     std::string green;
     PixelFormat format = PixelFormat::UInt16;
     std::string out;
+    double distance = 0; // ao: --distance (shared with the height-map occlusion bakes), or inf
 };
 
 int runMeshBake(const MeshBakeCli& m, const MeshBakeOutput& o, const CLI::App& command);

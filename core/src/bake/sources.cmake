@@ -17,4 +17,6 @@ target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/NormalMapBaker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/NormalMapConversion.cpp
   ${CMAKE_CURRENT_LIST_DIR}/HeightFromNormals.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/OcclusionHorizon.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/OcclusionBaker.cpp
 )

@@ -9,6 +9,7 @@
 #include "parallax/meshbake/MeshBake.h"
 
 #include "BakeTiles.h"
+#include "parallax/bake/OcclusionBaker.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -102,6 +103,7 @@ private slots:
     void sameMeshFromEveryFormat();
     void occlusionMatchesTheCosineIntegral();
     void flatGroundIsUnoccluded();
+    void occlusionMatchesTheHeightMapBake();
     void givenRangeMapsAndRefusesClamping();
     void refusesAnEmptyOrDistantTile();
     void cancelsAndReportsProgress();
@@ -656,6 +658,58 @@ void MeshBakeTest::occlusionMatchesTheCosineIntegral() {
         }
     }
     qInfo("worst occlusion error %.4f", worst);
+}
+
+// On a height-field mesh the mesh's occlusion and the height-map occlusion (docs/conventions.md §7)
+// of the heights baked from it are one quantity: at every texel they agree within the rays' noise
+// and the height map's resolution.
+void MeshBakeTest::occlusionMatchesTheHeightMapBake() {
+    std::mt19937 rng = random(10);
+    const TileRect t{0, 0, 1, 1};
+    const double amplitude = std::uniform_real_distribution<double>(0.05, 0.1)(rng);
+    const double phase = std::uniform_real_distribution<double>(0, 2 * kPi)(rng);
+    const BakeMesh mesh = toBakeMesh(test::periodicGround(t, 192, amplitude, phase));
+    MeshBakeOptions o;
+    o.tile = bakeTile(t);
+    o.width = o.height = 64;
+    o.maps = {true, false, true};
+    o.rays = 1024;
+    o.distance = 0.5; // mesh units = uv units: the tile is 1 wide
+    o.seed = m_seed;
+    Result<MeshBakeResult> r = bake(mesh, o);
+    QVERIFY2(r, r ? "" : r.error().message.c_str());
+    HeightField field(o.width, o.height);
+    for (int j = 0; j < o.height; ++j) {
+        for (int i = 0; i < o.width; ++i)
+            field.at(i, j) = r->height.at(i, j);
+    }
+    OcclusionBakeOptions h;
+    h.heightScale = static_cast<float>(r->heightScale);
+    h.distance = 0.5;
+    h.wrap = WrapMode::Repeat;
+    Result<OcclusionMaps> maps = bakeOcclusion(field, h, OcclusionOutputs::AmbientOcclusion);
+    QVERIFY2(maps, maps ? "" : maps.error().message.c_str());
+    double worst = 0, sum = 0, lowest = 1;
+    for (int j = 0; j < o.height; ++j) {
+        for (int i = 0; i < o.width; ++i) {
+            const double a = r->occlusion.at(i, j), b = maps->occlusion.at(i, j);
+            worst = std::max(worst, std::abs(a - b));
+            sum += std::abs(a - b);
+            lowest = std::min(lowest, b);
+            if (std::abs(a - b) > 0.02)
+                QFAIL(qPrintable(QString("seed %1, texel (%2, %3): the mesh's occlusion %4, the "
+                                         "height map's %5")
+                                     .arg(m_seed)
+                                     .arg(i)
+                                     .arg(j)
+                                     .arg(a)
+                                     .arg(b)));
+        }
+    }
+    const double mean = sum / (o.width * o.height);
+    qInfo("mesh vs height-map occlusion: worst %.4f, mean %.4f, darkest %.3f", worst, mean, lowest);
+    QVERIFY(mean < 0.005);
+    QVERIFY(lowest < 0.9); // the surface occludes itself: the comparison means something
 }
 
 // A plane sees nothing but sky, in both wraps and at every distance.
