@@ -666,7 +666,7 @@ void MeshBakeTest::occlusionMatchesTheCosineIntegral() {
 void MeshBakeTest::occlusionMatchesTheHeightMapBake() {
     std::mt19937 rng = random(10);
     const TileRect t{0, 0, 1, 1};
-    const double amplitude = std::uniform_real_distribution<double>(0.05, 0.1)(rng);
+    const double amplitude = std::uniform_real_distribution<double>(0.08, 0.12)(rng);
     const double phase = std::uniform_real_distribution<double>(0, 2 * kPi)(rng);
     const BakeMesh mesh = toBakeMesh(test::periodicGround(t, 192, amplitude, phase));
     MeshBakeOptions o;
@@ -709,7 +709,7 @@ void MeshBakeTest::occlusionMatchesTheHeightMapBake() {
     const double mean = sum / (o.width * o.height);
     qInfo("mesh vs height-map occlusion: worst %.4f, mean %.4f, darkest %.3f", worst, mean, lowest);
     QVERIFY(mean < 0.005);
-    QVERIFY(lowest < 0.9); // the surface occludes itself: the comparison means something
+    QVERIFY(lowest < 0.92); // the surface occludes itself: the comparison means something
 }
 
 // A plane sees nothing but sky, in both wraps and at every distance.
