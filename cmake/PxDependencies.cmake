@@ -18,6 +18,8 @@ find_package(TBB CONFIG REQUIRED)
 find_package(Threads REQUIRED)
 # Assimp reads the artist's meshes (OBJ, glTF 2.0) for the preview (core/src/mesh).
 find_package(assimp CONFIG REQUIRED)
+# Intel Embree 3 traces the rays of the mesh bake (core/src/meshbake): Debian's libembree-dev.
+find_package(embree 3 REQUIRED)
 # libpng: the core checks a PNG's data with its own error handler; the tests decode exported PNGs
 # the way engines do (gamma-aware).
 find_package(PNG REQUIRED)

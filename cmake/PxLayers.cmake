@@ -20,6 +20,8 @@ set(PX_LAYERS
   "core/sample: core/heightfield"
   "core/bake: core/heightfield core/glsl"
   "core/trace: core/bake"
+  # The mesh bake: the bakers' controls below it, the mesh loader's checks beside it.
+  "core/meshbake: core/bake core/mesh"
   "core/engine: core/trace"
   "core/material: core/trace"
   "core/shader: core/material"
@@ -27,11 +29,11 @@ set(PX_LAYERS
   "core/export: core/eval core/shader"
   # parallax-render: the OpenGL renderer, on all of the core.
   "app/render: core/export core/light core/mesh"
-  "app/cli: app/render"
+  "app/cli: app/render core/meshbake"
   # The editor: the document model (no widgets, no GL) at the bottom, the window at the top.
   "app/studio/model: core/export core/light core/mesh"
   "app/studio/widgets: app/studio/model"
-  "app/studio/jobs: app/studio/model app/render"
+  "app/studio/jobs: app/studio/model app/render core/meshbake"
   "app/studio/preview: app/studio/jobs app/studio/widgets"
   "app/studio/panels: app/studio/preview"
   "app/studio/window: app/studio/panels"

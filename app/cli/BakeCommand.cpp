@@ -8,6 +8,7 @@
 
 #include "Cli.h"
 #include "CommonOptions.h"
+#include "MeshBakeCommand.h"
 #include "ProgressLine.h"
 #include "parallax/bake/BakeEncoding.h"
 #include "parallax/bake/ConeMapBaker.h"
@@ -48,6 +49,7 @@ struct BakeOptions {
     std::string distance = "inf"; // ao, bent-normal: D in uv, or inf
     int directions = 0;           // ao, bent-normal: azimuths (0: the default)
     std::string out;
+    MeshBakeCli mesh; // bake height|normal|ao --mesh (MeshBakeCommand.h)
 };
 
 bool isOcclusion(const std::string& kind) {
@@ -219,6 +221,23 @@ Result<Image> bakePyramid(const BakeOptions& o, PixelFormat format) {
 }
 
 int runBake(const BakeOptions& o, const CLI::App& cmd) {
+    if (o.mesh.asked(o.kind)) {
+        if (o.kind != "height" && o.kind != "normal" && o.kind != "ao")
+            return fail("bake " + o.kind +
+                        " bakes from a height map; a --mesh bakes height, "
+                        "normal or ao");
+        Result<PixelFormat> format = outputFormat(o);
+        if (!format)
+            return fail(format.error().message);
+        // --distance is the occlusion bakes' own option: here in the mesh's units.
+        const Result<double> distance = occlusionDistance(o.distance);
+        if (!distance)
+            return fail(distance.error().message);
+        return runMeshBake(o.mesh, {o.kind, o.height.wrap, o.green, *format, o.out, *distance},
+                           cmd);
+    }
+    if (Status s = o.mesh.checkNotGiven(o.kind, cmd); !s)
+        return fail(s.error().message);
     if (Status s = checkApplicable(o, cmd); !s)
         return fail(s.error().message);
     Result<PixelFormat> format = outputFormat(o);
@@ -257,10 +276,14 @@ Action addBakeCommand(CLI::App& app) {
     auto o = std::make_shared<BakeOptions>();
     CLI::App* cmd = app.add_subcommand(
         "bake", "Bake a normal, cone, relaxed cone, max-mip, ambient occlusion or bent normal map "
-                "from a height map");
-    cmd->add_option("kind", o->kind, "normal, cone, relaxed-cone, pyramid, ao or bent-normal")
+                "from a height map, or height, normal and occlusion maps from a sculpted tile "
+                "(--mesh)");
+    cmd->add_option("kind", o->kind,
+                    "normal, cone, relaxed-cone, pyramid, ao or bent-normal from a height map; "
+                    "height, normal or ao from a --mesh")
         ->required()
-        ->check(CLI::IsMember({"normal", "cone", "relaxed-cone", "pyramid", "ao", "bent-normal"}));
+        ->check(CLI::IsMember(
+            {"height", "normal", "cone", "relaxed-cone", "pyramid", "ao", "bent-normal"}));
     o->height.addTo(*cmd, false);
     cmd->add_option("--scale", o->scale,
                     "normal, ao, bent-normal: height scale s in uv units (the material's "
@@ -285,7 +308,8 @@ Action addBakeCommand(CLI::App& app) {
         ->check(CLI::IsMember({"atlas", "chain"}));
     cmd->add_option("--level", o->level, "pyramid: write one level only")->check(CLI::Range(0, 64));
     cmd->add_option("--distance", o->distance,
-                    "ao, bent-normal: how far (uv) a blocker may be; inf (default): unlimited");
+                    "ao, bent-normal: how far (uv; with --mesh, mesh units) a blocker may be; inf "
+                    "(default): unlimited");
     cmd->add_option("--directions", o->directions,
                     "ao, bent-normal: azimuths (default " +
                         std::to_string(kDefaultOcclusionDirections) + ")")
@@ -293,6 +317,7 @@ Action addBakeCommand(CLI::App& app) {
     cmd->add_flag("--gpu", o->gpu,
                   "cone, relaxed-cone: bake on the GPU (the same kernels, the same map; an "
                   "error where no OpenGL 4.3 context can be made)");
+    o->mesh.addTo(*cmd);
     cmd->add_option("--out", o->out, "Output image: .png, .tif or .exr (format from the extension)")
         ->required();
     return [o, cmd] { return runBake(*o, *cmd); };

@@ -23,7 +23,9 @@ namespace {
 bool namesOutputFile(const CLI::App& command, const std::string& option) {
     if (command.get_name() == "export")
         return false;
-    return option == "--out" || option == "--plot" || option == "--csv";
+    // bake --mesh --material writes (or updates) a material file.
+    return option == "--out" || option == "--plot" || option == "--csv" ||
+           (command.get_name() == "bake" && option == "--material");
 }
 
 // Refuses, before any work, an output that would overwrite an input or cannot be written; then

@@ -9,6 +9,7 @@
 // MainWindowActions.h holds the actions more than one of them reach (private to the window).
 
 #include "jobs/BakeRunner.h"
+#include "jobs/MeshBakeJob.h"
 #include "parallax/Result.h"
 #include "parallax/material/MapKind.h"
 #include "parallax/sample/ProceduralMaps.h"
@@ -105,6 +106,10 @@ public:
     ImportSummaryDialog* importSummary() const;
     // Bakes in the background; over a normal map loaded from a file it asks first.
     void startBake(BakeKind kind);
+    // Bake ▸ From Mesh… without its dialog (MainWindowMeshBake.cpp): reads the mesh unless given,
+    // bakes in the background, adopts the result as a new material (one undo step).
+    bool bakeFromMesh(const QString& path, const MeshBakeOptions& options,
+                      SharedBakeMesh mesh = {});
 
     // The window's size, docks and layout as the user left them (settings), restored at start-up
     // of an interactive session (not for screenshots and tests, which want a known layout).
@@ -160,6 +165,8 @@ private:
     void exportDialog();
     void showShortcuts();
     void runBake(BakeKind kind);
+    void bakeFromMeshDialog();
+    SharedBakeMesh readMeshForBake(const QString& path, MeshUp up);
     void onBakeFinished(const BakeOutcome& outcome);
     void bakeMissingConeMaps();
 

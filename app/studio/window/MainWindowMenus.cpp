@@ -215,6 +215,11 @@ void MainWindow::createMenus() {
         connect(a, &QAction::triggered, this, [this, k = kind] { startBake(k); });
         bake->addAction(a);
     }
+    QAction* fromMesh = action(this, tr("From &Mesh…"), QKeySequence(),
+                               tr("Bake height, normal and occlusion maps from a sculpted tile "
+                                  "into a new material."));
+    connect(fromMesh, &QAction::triggered, this, &MainWindow::bakeFromMeshDialog);
+    bake->addAction(fromMesh);
     QAction* cancel = action(this, tr("&Cancel Bake"), QKeySequence(Qt::Key_Escape),
                              tr("Stop the running bake; nothing changes."));
     connect(cancel, &QAction::triggered, m_baker, &BakeRunner::cancel);
