@@ -61,8 +61,15 @@ Result<unsigned> GpuConeBaker::program(ConeKind kind, WrapMode wrap) {
         return found->second.id();
     if (Status s = requireGl43(currentGlInfo()); !s)
         return s.error();
+    // llvmpipe runs a work group's invocations as one SIMD program, and there the relaxed
+    // kernel's divergent search missed cells that narrow cones (issue 41: cones wider than the
+    // CPU's on noise 256², in whole tiles); one invocation a group gives the CPU's cones.
+    if (m_localSize == 0)
+        m_localSize =
+            currentGlInfo().renderer.find("llvmpipe") != std::string::npos ? 1 : kBakeLocalSize;
     Result<GeneratedShader> source = generateBakeShader(
-        kind == ConeKind::Relaxed ? BakeShaderKind::Relaxed : BakeShaderKind::Quick, wrap);
+        kind == ConeKind::Relaxed ? BakeShaderKind::Relaxed : BakeShaderKind::Quick, wrap,
+        m_localSize);
     if (!source)
         return source.error();
     Result<gl::Object> shader =
@@ -137,7 +144,7 @@ Result<ConeMap> GpuConeBaker::bakeRaw(const HeightField& field, WrapMode wrap, C
         relaxed ? ((field.width + 3) / 4) * ((field.height + 3) / 4) : static_cast<int>(texels);
     const GLint first = glGetUniformLocation(id, "pxBakeFirst");
     const GLint end = glGetUniformLocation(id, "pxBakeEnd");
-    int slice = kBakeLocalSize; // one work group first, then as many as the time allows
+    int slice = m_localSize; // one work group first, then as many as the time allows
     int dispatches = 0;
     for (int done = 0; done < items;) {
         if (control.cancelled())
@@ -146,7 +153,7 @@ Result<ConeMap> GpuConeBaker::bakeRaw(const HeightField& field, WrapMode wrap, C
         glUniform1i(first, done);
         glUniform1i(end, done + count);
         const auto sliceStart = Clock::now();
-        glDispatchCompute(static_cast<GLuint>((count + kBakeLocalSize - 1) / kBakeLocalSize), 1, 1);
+        glDispatchCompute(static_cast<GLuint>((count + m_localSize - 1) / m_localSize), 1, 1);
         glFinish();
         ++dispatches;
         done += count;
@@ -157,7 +164,7 @@ Result<ConeMap> GpuConeBaker::bakeRaw(const HeightField& field, WrapMode wrap, C
         if (ms < 0.5 * sliceMilliseconds)
             slice = std::min(slice * 2, 1 << 24);
         else if (ms > 2.0 * sliceMilliseconds)
-            slice = std::max(slice / 2, kBakeLocalSize);
+            slice = std::max(slice / 2, m_localSize);
     }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     ConeMap out(kind, field.width, field.height);

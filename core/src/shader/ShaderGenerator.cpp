@@ -323,7 +323,7 @@ Result<GeneratedProgram> generateBackgroundProgram() {
     return program;
 }
 
-Result<GeneratedShader> generateBakeShader(BakeShaderKind kind, WrapMode wrap) {
+Result<GeneratedShader> generateBakeShader(BakeShaderKind kind, WrapMode wrap, int localSize) {
     // The GPU's bindings first (the kernels call them), then the kernels as kernels.glsl lists
     // them (the list the C++ compilation includes), then the kind's main().
     std::vector<std::string> files{"bake/gpu/bindings.glsl"};
@@ -342,7 +342,7 @@ Result<GeneratedShader> generateBakeShader(BakeShaderKind kind, WrapMode wrap) {
                     std::string(toString(wrap)) + "), compute stage";
     options.countFetches = false;
     options.prelude =
-        "layout(local_size_x = " + std::to_string(kBakeLocalSize) +
+        "layout(local_size_x = " + std::to_string(localSize) +
         ") in;\nconst bool pxBakeRepeat = " + (wrap == WrapMode::Repeat ? "true" : "false") + ";\n";
     return generateStage(options, {}, files);
 }

@@ -77,10 +77,11 @@ Result<GeneratedProgram> generateBackgroundProgram();
 // The compute program of a cone bake: the kernels of shaders/bake/ (the ones the CPU bakers
 // compile as C++), the GPU's bindings (shaders/bake/gpu/bindings.glsl) and the kind's main(), only
 // what main() reaches, `precise` kept (the GPU rounds as the CPU does). kBakeLocalSize invocations
-// a work group: one per 4 x 4 tile (relaxed) or per texel (quick).
+// a work group (or `localSize`): one per 4 x 4 tile (relaxed) or per texel (quick).
 enum class BakeShaderKind { Quick, Relaxed };
 inline constexpr int kBakeLocalSize = 64;
-Result<GeneratedShader> generateBakeShader(BakeShaderKind kind, WrapMode wrap);
+Result<GeneratedShader> generateBakeShader(BakeShaderKind kind, WrapMode wrap,
+                                           int localSize = kBakeLocalSize);
 
 // Rewrites the "SOURCE:LINE" / "SOURCE(LINE)" positions of a GLSL compiler log (Mesa, glslang,
 // NVIDIA) into "shaders/FILE:LINE".

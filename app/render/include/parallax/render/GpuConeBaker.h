@@ -45,6 +45,7 @@ public:
 private:
     Result<unsigned> program(ConeKind kind, WrapMode wrap);
     std::map<int, gl::Object> m_programs; // by kind * 2 + wrap
+    int m_localSize = 0;                  // invocations a work group, chosen with the first program
 };
 
 // GpuConeBaker::bake on a headless context made for the call (HeadlessContext): for the command
