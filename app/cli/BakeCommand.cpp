@@ -288,7 +288,7 @@ Action addBakeCommand(CLI::App& app) {
     cmd->add_option("--scale", o->scale,
                     "normal, ao, bent-normal: height scale s in uv units (the material's "
                     "height_scale)")
-        ->check(CLI::Range(0.0f, 100.0f));
+        ->check(inRange(0.0, 100.0));
     std::vector<std::string> filters(normalFilterNames().begin(), normalFilterNames().end());
     cmd->add_option("--filter", o->filter, "normal: derivative filter (default sobel)")
         ->check(CLI::IsMember(filters));
@@ -306,14 +306,14 @@ Action addBakeCommand(CLI::App& app) {
     cmd->add_option("--layout", o->layout,
                     "pyramid: atlas (every level stacked, for the GPU) or chain (for looking at)")
         ->check(CLI::IsMember({"atlas", "chain"}));
-    cmd->add_option("--level", o->level, "pyramid: write one level only")->check(CLI::Range(0, 64));
+    cmd->add_option("--level", o->level, "pyramid: write one level only")->check(inRange(0, 64));
     cmd->add_option("--distance", o->distance,
                     "ao, bent-normal: how far (uv; with --mesh, mesh units) a blocker may be; inf "
                     "(default): unlimited");
     cmd->add_option("--directions", o->directions,
                     "ao, bent-normal: azimuths (default " +
                         std::to_string(kDefaultOcclusionDirections) + ")")
-        ->check(CLI::Range(1, kMaxOcclusionDirections));
+        ->check(inRange(1, kMaxOcclusionDirections));
     cmd->add_flag("--gpu", o->gpu,
                   "cone, relaxed-cone: bake on the GPU (the same kernels, the same map; an "
                   "error where no OpenGL 4.3 context can be made)");

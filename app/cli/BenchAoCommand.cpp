@@ -2,6 +2,7 @@
 // as CSV, a summary table and a plot, as `bench` does for the techniques.
 
 #include "Cli.h"
+#include "CommonOptions.h"
 #include "DistanceOption.h"
 #include "OcclusionPlot.h"
 #include "parallax/eval/OcclusionBench.h"
@@ -159,23 +160,23 @@ Action addBenchAoCommand(CLI::App& app) {
         ->delimiter(',')
         ->check(CLI::IsMember(names));
     cmd->add_option("--sample-size", o->sampleSize, "Side of the --sample maps in texels")
-        ->check(CLI::Range(4, 2048));
+        ->check(inRange(4, 2048));
     cmd->add_option("--wrap", o->wrap, "Wrap mode of the surface")
         ->check(CLI::IsMember({"repeat", "clamp"}));
     cmd->add_option("--scale", o->scale, "Height scale s in uv units (default 0.05)")
-        ->check(CLI::Range(0.0f, 100.0f));
+        ->check(inRange(0.0, 100.0));
     addDistanceOption(*cmd, "--distance", o->distance,
                       "How far a blocker may be, uv units, or inf (default 0.1: Material Maker's "
                       "radius; the peers' radii follow it)");
     cmd->add_option("--reference-directions", o->referenceDirections,
                     "Azimuths of the exact value the others are measured against (default 1024)")
-        ->check(CLI::Range(1, 4096));
+        ->check(inRange(1, 4096));
     std::vector<std::string> methods(occlusionMethodNames().begin(), occlusionMethodNames().end());
     cmd->add_option("--methods", o->methods, "Only these methods (default: every one)")
         ->delimiter(',')
         ->check(CLI::IsMember(methods));
     cmd->add_option("--repeats", o->repeats, "Timed runs per method and map, fastest reported")
-        ->check(CLI::Range(1, 100));
+        ->check(inRange(1, 100));
     cmd->add_option("--out", o->out, "Output CSV; - for standard output");
     cmd->add_option("--plot", o->plot, "Error-against-time plot (.svg)");
     cmd->add_flag("--quiet", o->quiet, "No progress line and no summary table");

@@ -160,14 +160,8 @@ int runBenchCommand(const BenchOptions& o) {
     Result<std::vector<Technique>> techniques = parseTechniqueList(o.techniques);
     if (!techniques)
         return fail(techniques.error().message);
-    Result<std::vector<BenchMap>> maps = loadMaps(o);
-    if (!maps)
-        return fail(maps.error().message);
-
-    BenchConfig config;
-    config.maps = std::move(*maps);
-    config.wrap = parseWrapMode(o.wrap).value_or(WrapMode::Repeat);
-    // Hand-given sweeps replace the built-in ones of their techniques (and add the technique).
+    // Hand-given sweeps replace the built-in ones of their techniques (and add the technique);
+    // read before any map, so a mistyped value costs no load.
     std::vector<std::pair<Technique, std::vector<BenchSetting>>> given;
     for (const std::string& spec : o.sweeps) {
         Result<std::vector<BenchSetting>> sweep = parseSweep(spec);
@@ -178,6 +172,13 @@ int runBenchCommand(const BenchOptions& o) {
             techniques->push_back(t);
         given.emplace_back(t, std::move(*sweep));
     }
+    Result<std::vector<BenchMap>> maps = loadMaps(o);
+    if (!maps)
+        return fail(maps.error().message);
+
+    BenchConfig config;
+    config.maps = std::move(*maps);
+    config.wrap = parseWrapMode(o.wrap).value_or(WrapMode::Repeat);
     for (Technique t : *techniques) {
         std::vector<BenchSetting> sweep =
             o.defaultsOnly ? std::vector<BenchSetting>{defaultSetting(t)} : qualitySweep(t);
@@ -286,7 +287,7 @@ Action addBenchCommand(CLI::App& app) {
         ->delimiter(',')
         ->check(CLI::IsMember(names));
     cmd->add_option("--sample-size", o->sampleSize, "Side of the --sample maps in texels")
-        ->check(CLI::Range(1, 4096));
+        ->check(inRange(1, 4096));
     cmd->add_flag("--invert", o->invert, "The files are depth maps (white = deep)");
     cmd->add_flag("--normalize", o->normalize, "Remap each map's [min, max] to [0, 1]");
     cmd->add_option("--channel", o->channel, "Channel holding the height")
@@ -302,27 +303,27 @@ Action addBenchCommand(CLI::App& app) {
                   "Measure each technique's default setting only, not its sweep");
     cmd->add_option("--polar", o->polar, "View angles from the normal, degrees [0, 90)")
         ->delimiter(',')
-        ->check(CLI::Range(0.0, 89.999));
+        ->check(inRange(0.0, 89.999));
     cmd->add_option("--azimuth", o->azimuth, "View azimuth from +u towards +v, degrees")
-        ->check(CLI::Range(-360.0, 360.0));
+        ->check(inRange(-360.0, 360.0));
     cmd->add_option("--scales", o->scales, "Height scales s in uv units")
         ->delimiter(',')
-        ->check(CLI::Range(0.0f, 100.0f));
+        ->check(inRange(0.0, 100.0));
     cmd->add_option("--rays", o->rays, "Rays per side (R): R x R rays per map, scale and angle")
-        ->check(CLI::Range(1, 4096));
+        ->check(inRange(1, 4096));
     cmd->add_option("--repeats", o->repeats,
                     "Timed single-thread passes per setting, fastest reported (0: no CPU timing)")
-        ->check(CLI::Range(0, 100));
+        ->check(inRange(0, 100));
     cmd->add_flag("--gpu", o->gpu,
                   "Also time each setting on the GPU: 1440x1440 = 1920x1080 rays of the scene, "
                   "traced by the GL kernels on a headless context");
     cmd->add_option("--gpu-frames", o->gpuFrames,
                     "Timed GPU traces per setting after one warm-up, fastest reported")
-        ->check(CLI::Range(1, 100));
+        ->check(inRange(1, 100));
     cmd->add_option("--gpu-rays", o->gpuRays,
                     "Rays per side of the timed GPU trace (1440: a 1920x1080 frame's pixels; "
                     "fewer are timed and scaled to the frame)")
-        ->check(CLI::Range(1, 4096));
+        ->check(inRange(1, 4096));
     o->kernels.addTo(*cmd);
     cmd->add_option("--out", o->out, "Output CSV; - for standard output");
     cmd->add_option("--plot", o->plot, "Work-precision plot (.svg)");

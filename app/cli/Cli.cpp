@@ -1,5 +1,6 @@
 #include "Cli.h"
 
+#include "CommonOptions.h"
 #include "Interrupt.h"
 #include "parallax/Version.h"
 #include "parallax/io/AtomicWrite.h"
@@ -81,35 +82,25 @@ int finishStandardOutput(int status, bool closed) {
     return status == 0 ? 1 : status;
 }
 
-// CLI11 reads integers with strtol's base 0, so "--seed 010" would be 8 and "0x10" 16: numbers
-// are decimal here, leading zeros and all.
-void decimalIntegers(CLI::App& app) {
-    for (CLI::App* command : app.get_subcommands({})) {
-        for (CLI::Option* option : command->get_options()) {
-            const std::string type = option->get_type_name();
-            if (!type.starts_with("INT") && !type.starts_with("UINT"))
-                continue;
-            option->transform(CLI::Validator(
-                [](std::string& value) -> std::string {
-                    const std::size_t sign = value.starts_with('-') || value.starts_with('+');
-                    const std::size_t first = value.find_first_not_of('0', sign);
-                    if (first == sign || first == std::string::npos)
-                        return {}; // no leading zero (or "0")
-                    if (value.find_first_not_of("0123456789", sign) != std::string::npos)
-                        return "\"" + value + "\" is not a decimal integer";
-                    value.erase(sign, first - sign);
-                    return {};
-                },
-                "", "decimal"));
-        }
-    }
-}
-
 } // namespace
 
 int fail(const std::string& message) {
     std::cerr << "error: " << message << "\n";
     return 1;
+}
+
+std::vector<std::pair<CLI::App*, Action>> addCommands(CLI::App& app) {
+    std::vector<std::pair<CLI::App*, Action>> entries;
+    for (Action (*registrar)(CLI::App&) :
+         {addSampleCommand, addTraceCommand, addShaderCommand, addRenderCommand, addExportCommand,
+          addBenchCommand, addStabilityCommand, addBakeCommand, addRecommendCommand,
+          addImportCommand}) {
+        const std::size_t before = app.get_subcommands({}).size();
+        Action action = registrar(app);
+        entries.emplace_back(app.get_subcommands({}).at(before), std::move(action));
+    }
+    checkNumbers(app);
+    return entries;
 }
 
 int run(int argc, char** argv) {
@@ -119,10 +110,6 @@ int run(int argc, char** argv) {
     app.set_version_flag("--version", std::string("parallax-cli ") + kVersion);
     app.require_subcommand(1);
 
-    struct Entry {
-        CLI::App* command;
-        Action action;
-    };
     installInterruptHandlers();
     const bool stdoutClosed = holdClosedStandardFiles();
     std::vector<Entry> entries;
@@ -142,7 +129,7 @@ int run(int argc, char** argv) {
     add(addBakeCommand);
     add(addRecommendCommand);
     add(addImportCommand);
-    decimalIntegers(app);
+    checkNumbers(app);
 
     try {
         app.parse(argc, argv);
@@ -153,11 +140,11 @@ int run(int argc, char** argv) {
                   << "Run 'parallax-cli --help' (or 'parallax-cli COMMAND --help') for usage.\n";
         return 2;
     }
-    for (const Entry& entry : entries) {
-        if (!entry.command->parsed())
+    for (const auto& [command, action] : entries) {
+        if (!command->parsed())
             continue;
         const InputSession session; // the run's record of what it reads
-        if (Status s = checkFileOptions(*entry.command); !s)
+        if (Status s = checkFileOptions(*command); !s)
             return fail(s.error().message);
         try {
             return finishStandardOutput(entry.action(), stdoutClosed);

@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace px::cli {
 
@@ -25,6 +27,11 @@ Action addImportCommand(CLI::App& app);
 
 // Prints "error: <message>" to stderr and returns the failure status.
 int fail(const std::string& message);
+
+// Registers every subcommand on `app`, with the number checks every numeric option gets
+// (CommonOptions.h); returns each subcommand with its action, in order. (The tests enumerate the
+// options through it.)
+std::vector<std::pair<CLI::App*, Action>> addCommands(CLI::App& app);
 
 int run(int argc, char** argv);
 

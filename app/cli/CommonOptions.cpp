@@ -1,7 +1,10 @@
 #include "CommonOptions.h"
 
+#include "parallax/NumberText.h"
 #include "parallax/material/MaterialNames.h"
 
+#include <climits>
+#include <cstdint>
 #include <cstdlib>
 #include <functional>
 
@@ -9,6 +12,60 @@ namespace px::cli {
 
 std::vector<std::string> choices(std::span<const std::string_view> names) {
     return {names.begin(), names.end()};
+}
+
+namespace {
+
+CLI::Validator numberCheck(NumberRange range, std::string description) {
+    return CLI::Validator(
+        [range](std::string& value) -> std::string {
+            Result<double> n = parseReal(value, {}, range);
+            return n ? std::string() : n.error().message;
+        },
+        std::move(description));
+}
+
+} // namespace
+
+CLI::Validator inRange(double min, double max) {
+    return numberCheck({min, max}, "[" + std::to_string(min) + " - " + std::to_string(max) + "]");
+}
+
+CLI::Validator positive() {
+    return numberCheck({0.0, NumberRange{}.max, true}, "POSITIVE");
+}
+
+CLI::Validator nonNegative() {
+    return numberCheck({0.0, NumberRange{}.max}, "NONNEGATIVE");
+}
+
+void checkNumbers(CLI::App& app) {
+    for (CLI::App* command : app.get_subcommands({})) {
+        for (CLI::Option* option : command->get_options()) {
+            const std::string full = option->get_type_name();
+            const std::string type = full.substr(0, full.find(':'));
+            if (type == "FLOAT") {
+                option->transform(CLI::Validator(
+                    [](std::string& value) -> std::string {
+                        Result<double> n = parseReal(value);
+                        return n ? std::string() : n.error().message;
+                    },
+                    "", "number"));
+            } else if (type == "INT" || type == "UINT") {
+                const long long min = type == "INT" ? INT_MIN : 0;
+                const long long max = type == "INT" ? INT_MAX : UINT32_MAX;
+                option->transform(CLI::Validator(
+                    [min, max](std::string& value) -> std::string {
+                        Result<long long> n = parseInteger(value, {}, min, max);
+                        if (!n)
+                            return n.error().message;
+                        value = std::to_string(*n); // decimal for CLI11: "010" is ten
+                        return {};
+                    },
+                    "", "integer"));
+            }
+        }
+    }
 }
 
 void HeightOptions::addTo(CLI::App& command, bool required) {
@@ -60,29 +117,29 @@ void QualityOptions::addTo(CLI::App& command) {
     command
         .add_option("--min-layers", minLayers,
                     "Layers looking straight down" + defaultsOf(layers, &TraceParams::minLayers))
-        ->check(CLI::Range(1, kMaxLayersLimit));
+        ->check(inRange(1, kMaxLayersLimit));
     command
         .add_option("--max-layers", maxLayers,
                     "Layers at grazing angles" + defaultsOf(layers, &TraceParams::maxLayers))
-        ->check(CLI::Range(1, kMaxLayersLimit));
+        ->check(inRange(1, kMaxLayersLimit));
     command
         .add_option("--binary-steps", binarySteps,
                     "Binary search steps" +
                         defaultsOf([](const TechniqueInfo& t) { return t.usesBinarySteps; },
                                    &TraceParams::binarySteps))
-        ->check(CLI::Range(0, kMaxRefineLimit));
+        ->check(inRange(0, kMaxRefineLimit));
     command
         .add_option("--secant-steps", secantSteps,
                     "Secant steps" +
                         defaultsOf([](const TechniqueInfo& t) { return t.usesSecantSteps; },
                                    &TraceParams::secantSteps))
-        ->check(CLI::Range(0, kMaxRefineLimit));
+        ->check(inRange(0, kMaxRefineLimit));
     command
         .add_option("--max-steps", maxSteps,
                     "Cap on cone steps, cells or pyramid nodes" +
                         defaultsOf([](const TechniqueInfo& t) { return t.usesMaxSteps; },
                                    &TraceParams::maxSteps))
-        ->check(CLI::Range(1, kMaxStepsLimit));
+        ->check(inRange(1, kMaxStepsLimit));
 }
 
 void QualityOptions::applyTo(TraceParams& params) const {

@@ -21,6 +21,16 @@ namespace px::cli {
 // The names of a core table as CLI11's IsMember wants them, so no command lists them by hand.
 std::vector<std::string> choices(std::span<const std::string_view> names);
 
+// Numbers on the command line, read by parallax/NumberText.h and refused in its words
+// ("--level: 'nan' is not a finite number", "--size: '0' is out of range (1 to 16384)").
+// checkNumbers puts the reading in front of every numeric option of every command: a FLOAT must be
+// finite, an INT fit an int and a UINT an unsigned 32-bit integer, decimal (CLI11 alone reads
+// "010" as octal and wraps what overflows). Ranges are checked by these validators:
+CLI::Validator inRange(double min, double max);
+CLI::Validator positive();    // > 0
+CLI::Validator nonNegative(); // >= 0
+void checkNumbers(CLI::App& app);
+
 struct HeightOptions {
     std::string file;
     bool invert = false;

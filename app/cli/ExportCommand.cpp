@@ -225,17 +225,17 @@ Action addExportCommand(CLI::App& app) {
     cmd->add_option("--specular", o->specular,
                     "With --height: specular map (glTF and Unreal read it; see docs/export.md)");
     cmd->add_option("--scale", o->scale, "With --height: height scale in uv units")
-        ->check(CLI::Range(0.0f, 100.0f));
+        ->check(inRange(0.0, 100.0));
     cmd->add_option("--technique", o->technique,
                     "With --height: technique, or auto (the cheapest meeting --budget up to "
                     "--max-polar, resolved on the exported maps)")
         ->check(CLI::IsMember(techniqueNames()));
     cmd->add_option("--budget", o->autoQuality.budget,
                     "With --technique auto: p99 hit error budget in texels (default 0.5)")
-        ->check(CLI::Range(0.0f, 1e6f));
+        ->check(inRange(0.0, 1e6));
     cmd->add_option("--max-polar", o->autoQuality.maxPolar,
                     "With --technique auto: steepest view angle, degrees (default 80)")
-        ->check(CLI::Range(0.0f, 89.0f));
+        ->check(inRange(0.0, 89.0));
     cmd->add_option("--name", o->name, "With --height: material name (default: from the file)");
     cmd->add_option("--batch", o->batch,
                     "Folder of texture sets (each read as import reads one: names, packing, "

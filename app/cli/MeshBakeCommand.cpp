@@ -1,6 +1,7 @@
 #include "MeshBakeCommand.h"
 
 #include "Cli.h"
+#include "CommonOptions.h"
 #include "ProgressLine.h"
 #include "parallax/io/FileExtension.h"
 #include "parallax/io/Inputs.h"
@@ -137,9 +138,9 @@ void MeshBakeCli::addTo(CLI::App& command) {
                        "mesh: heights z0,z1 mapped to 0..1 (default: the range of the hits)");
     command.add_option("--size", size, "mesh: the maps' size, N or WxH (default 1024)");
     command.add_option("--samples", samples, "mesh: K x K sub-samples per texel (default 1)")
-        ->check(CLI::Range(1, 16));
+        ->check(inRange(1, 16));
     command.add_option("--rays", rays, "ao from a mesh: rays per texel (default 64)")
-        ->check(CLI::Range(1, 4096));
+        ->check(inRange(1, 4096));
     command.add_option("--material", material,
                        "mesh: write (or update) a material JSON with the map and the height scale");
 }

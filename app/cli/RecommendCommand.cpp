@@ -312,16 +312,16 @@ Action addRecommendCommand(CLI::App& app) {
     o->height.addTo(*cmd, false);
     cmd->add_option("--scale", o->scale,
                     "Height scale s in uv units (default: the material's, or 0.05)")
-        ->check(CLI::Range(0.0f, 100.0f));
+        ->check(inRange(0.0, 100.0));
     cmd->add_option("--max-polar", o->maxPolar, "Steepest view angle from the normal, degrees")
-        ->check(CLI::Range(0.0, 89.0));
+        ->check(inRange(0.0, 89.0));
     cmd->add_option("--budget", o->budget, "Error budget in texels of the map (default 0.5)")
-        ->check(CLI::Range(0.0, 1e6));
+        ->check(inRange(0.0, 1e6));
     cmd->add_option("--budget-pixels", o->budgetPixels, "Error budget in screen pixels")
-        ->check(CLI::Range(0.0, 1e6));
+        ->check(inRange(0.0, 1e6));
     cmd->add_option("--texels-per-pixel", o->texelsPerPixel,
                     "With --budget-pixels: texels of the map per screen pixel")
-        ->check(CLI::PositiveNumber);
+        ->check(positive());
     cmd->add_option("--view-distance", o->viewDistance,
                     "With --budget-pixels: distance to the surface, in the surface's units");
     cmd->add_option("--fov", o->fov, "Vertical field of view, degrees (default 60)");
@@ -336,7 +336,7 @@ Action addRecommendCommand(CLI::App& app) {
         ->check(CLI::IsMember({"fetches", "cpu", "gpu"}));
     cmd->add_option("--techniques", o->techniques, "Techniques to choose from (default: all)");
     cmd->add_option("--rays", o->rays, "Jittered rays per side per azimuth (default 32)")
-        ->check(CLI::Range(4, 256));
+        ->check(inRange(4, 256));
     cmd->add_flag("--godot", o->godot, "Also the fewest Godot deep-parallax layers that meet it");
     cmd->add_flag("--hdrp", o->hdrp,
                   "Also the fewest Unity HDRP parallax-occlusion steps that meet it");

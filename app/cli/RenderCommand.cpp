@@ -2,6 +2,7 @@
 
 #include "Cli.h"
 #include "CommonOptions.h"
+#include "parallax/NumberText.h"
 #include "parallax/eval/AutoTechnique.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/image/ImageSet.h"
@@ -63,43 +64,36 @@ struct RenderOptions {
     std::string out;
 };
 
-// "A,B,C" into exactly `n` finite numbers, or a sentence about `what`.
+// "A,B,C" into exactly `n` finite numbers, or a sentence about `what` (NumberText.h's words for
+// a part that is no finite number).
 Result<std::vector<float>> numbers(const std::string& text, std::size_t n,
                                    const std::string& what) {
     std::vector<float> values;
     std::stringstream in(text);
     for (std::string part; std::getline(in, part, ',');) {
-        try {
-            std::size_t used = 0;
-            const float v = std::stof(part, &used);
-            if (used != part.size() || !std::isfinite(v))
-                throw std::invalid_argument(part);
-            values.push_back(v);
-        } catch (const std::exception&) {
-            return Error{what + " \"" + text + "\" is not " + std::to_string(n) +
-                         " numbers separated by commas"};
-        }
+        Result<double> v = parseReal(part, what, {-3.0e38, 3.0e38});
+        if (!v)
+            return v.error();
+        values.push_back(static_cast<float>(*v));
     }
-    if (values.size() != n)
+    if (values.size() != n || text.ends_with(','))
         return Error{what + " \"" + text + "\" is not " + std::to_string(n) +
                      " numbers separated by commas"};
     return values;
 }
 
+// "512" (square) or "WIDTHxHEIGHT", each side 1 to 16384.
 Result<glm::ivec2> parseSize(const std::string& text) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    std::istringstream in(text);
-    if (in >> w) {
-        if (!(in >> x)) {
-            h = w; // "512": square
-        } else if (x != 'x' || !(in >> h) || (in >> extra)) {
-            w = 0;
-        }
-    }
-    if (w < 1 || h < 1 || w > 16384 || h > 16384)
-        return Error{"--size \"" + text + "\" is not WIDTHxHEIGHT with sides 1 to 16384"};
-    return glm::ivec2(w, h);
+    const std::size_t x = text.find('x');
+    Result<long long> w = parseInteger(text.substr(0, x), "--size", 1, 16384);
+    if (!w)
+        return w.error();
+    if (x == std::string::npos)
+        return glm::ivec2(static_cast<int>(*w));
+    Result<long long> h = parseInteger(text.substr(x + 1), "--size", 1, 16384);
+    if (!h)
+        return h.error();
+    return glm::ivec2(static_cast<int>(*w), static_cast<int>(*h));
 }
 
 // Default orbit distance: the mesh fills about two thirds of the frame.
@@ -396,8 +390,7 @@ Action addRenderCommand(CLI::App& app) {
     cmd->add_option("--normal-green", o->normalGreen,
                     "Green of the normal map: opengl (Y+) or directx (Y-)")
         ->check(CLI::IsMember({"opengl", "directx"}));
-    cmd->add_option("--scale", o->scale, "Height scale s in uv units")
-        ->check(CLI::Range(0.0f, 100.0f));
+    cmd->add_option("--scale", o->scale, "Height scale s in uv units")->check(inRange(0.0, 100.0));
     std::vector<std::string> techniques;
     for (const TechniqueInfo& t : allTechniques())
         techniques.emplace_back(t.name);
@@ -411,9 +404,9 @@ Action addRenderCommand(CLI::App& app) {
         ->check(CLI::IsMember(choices(lightingModelNames())));
     cmd->add_flag("--shadow", o->shadow, "Soft self-shadowing towards the light");
     cmd->add_option("--softness", o->softness, "Shadow softness, 0 (hard) to 1")
-        ->check(CLI::Range(0.0f, 1.0f));
+        ->check(inRange(0.0, 1.0));
     cmd->add_option("--tiling", o->tiling, "Texture repeats across the mesh")
-        ->check(CLI::Range(0.001f, 1000.0f));
+        ->check(inRange(0.001, 1000.0));
     cmd->add_option("--mesh", o->mesh,
                     "plane, cube, sphere, cylinder or a mesh file (.obj, .gltf, .glb)")
         ->check(CLI::Validator(
@@ -425,14 +418,14 @@ Action addRenderCommand(CLI::App& app) {
             },
             "MESH"));
     cmd->add_option("--uv-set", o->uvSet, "The mesh file's uv set the material uses (default 0)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(nonNegative());
     cmd->add_option("--mesh-root", o->meshRoot,
                     "Folder the mesh file's buffers, images and material libraries must lie "
                     "under (default: the mesh's own folder)")
         ->check(CLI::ExistingDirectory);
     cmd->add_option("--max-triangles", o->maxTriangles,
                     "Refuse mesh files with more triangles (default 2000000)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive());
     cmd->add_flag("--derivative-tbn", o->derivativeTbn,
                   "Tangent frame from screen-space derivatives");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (or one number: square)");
@@ -445,14 +438,14 @@ Action addRenderCommand(CLI::App& app) {
     cmd->add_option("--environment", o->environment,
                     "Image-based light: an equirectangular .hdr or .exr, or sky (built in)");
     cmd->add_option("--exposure", o->exposure, "Exposure in stops (EV) under --environment")
-        ->check(CLI::Range(-20.0f, 20.0f));
+        ->check(inRange(-20.0, 20.0));
     cmd->add_option("--time", o->timeFrames,
                     "Also time this many frames with each kernel flavour and print the medians "
                     "and their ratio")
-        ->check(CLI::Range(1, 10000));
+        ->check(inRange(1, 10000));
     cmd->add_option("--turntable", o->turntable,
                     "Render this many frames with the camera orbiting once: OUT-000.png, ...")
-        ->check(CLI::Range(1, 3600));
+        ->check(inRange(1, 3600));
     o->kernels.addTo(*cmd);
     o->cache.addTo(*cmd);
     cmd->add_option("--out", o->out, "Output image (.png)")->required();

@@ -1,6 +1,7 @@
 // parallax-cli sample: writes one of the procedural height maps the project makes itself.
 
 #include "Cli.h"
+#include "CommonOptions.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/sample/ProceduralMaps.h"
 
@@ -41,11 +42,11 @@ Action addSampleCommand(CLI::App& app) {
                                                  "and test shapes)");
     std::vector<std::string> names(proceduralMapNames().begin(), proceduralMapNames().end());
     cmd->add_option("name", o->name, "Which map")->check(CLI::IsMember(names));
-    cmd->add_option("--size", o->width, "Width in texels")->check(CLI::Range(1, 16384));
+    cmd->add_option("--size", o->width, "Width in texels")->check(inRange(1, 16384));
     cmd->add_option("--height-texels", o->height, "Height in texels (default: square)")
-        ->check(CLI::Range(1, 16384));
+        ->check(inRange(1, 16384));
     cmd->add_option("--seed", o->seed, "Random seed");
-    cmd->add_option("--level", o->level, "Height of the flat map")->check(CLI::Range(0.0f, 1.0f));
+    cmd->add_option("--level", o->level, "Height of the flat map")->check(inRange(0.0, 1.0));
     cmd->add_option("--bits", o->bits, "8, 16 or 32 (float)")->check(CLI::IsMember({8, 16, 32}));
     cmd->add_option("--out", o->out, "Output image (.png, .tif, .exr)")->required();
     return [o] { return runSample(*o); };

@@ -3,6 +3,7 @@
 // Exits non-zero if any row fails.
 
 #include "Cli.h"
+#include "CommonOptions.h"
 #include "parallax/eval/StabilitySuite.h"
 #include "parallax/io/AtomicWrite.h"
 
@@ -106,8 +107,7 @@ Action addStabilityCommand(CLI::App& app) {
     cmd->add_option("--case", o->cases, "Only these cases (comma-separated)")
         ->delimiter(',')
         ->check(CLI::IsMember(names));
-    cmd->add_option("--rays", o->rays, "Rays per side (R) of each case")
-        ->check(CLI::Range(1, 1024));
+    cmd->add_option("--rays", o->rays, "Rays per side (R) of each case")->check(inRange(1, 1024));
     cmd->add_option("--seed", o->seed,
                     "Seed of the maps with random texels (the adversarial ones)");
     cmd->add_flag("--list", o->list,

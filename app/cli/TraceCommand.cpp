@@ -126,12 +126,12 @@ Action addTraceCommand(CLI::App& app) {
         "trace", "Trace the canonical scene (R x R rays, one direction) and write each hit as CSV");
     o->height.addTo(*cmd);
     cmd->add_option("--scale", o->scale, "Height scale s in uv units (depth of h = 0)")
-        ->check(CLI::Range(0.0f, 100.0f));
+        ->check(inRange(0.0, 100.0));
     cmd->add_option("--polar", o->polar, "View angle from the normal, degrees [0, 90)")
-        ->check(CLI::Range(0.0, 89.999));
+        ->check(inRange(0.0, 89.999));
     cmd->add_option("--azimuth", o->azimuth, "View azimuth from +u towards +v, degrees")
-        ->check(CLI::Range(-360.0, 360.0));
-    cmd->add_option("--rays", o->rays, "Rays per side (R)")->check(CLI::Range(1, 4096));
+        ->check(inRange(-360.0, 360.0));
+    cmd->add_option("--rays", o->rays, "Rays per side (R)")->check(inRange(1, 4096));
     cmd->add_option("--technique", o->technique, "Technique")
         ->check(CLI::IsMember(techniqueNames()));
     o->quality.addTo(*cmd);

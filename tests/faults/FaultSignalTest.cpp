@@ -241,20 +241,17 @@ void FaultSignalTest::ctrlCFromOutsideStopsAtOnce() {
     while (!output.contains("baking relaxed-cone map:") && process.waitForReadyRead(60000))
         output += process.readAll();
     QVERIFY2(output.contains("baking relaxed-cone map:"), output.constData());
-    QElapsedTimer timer;
-    timer.start();
     ::kill(static_cast<pid_t>(process.processId()), SIGINT);
-    QVERIFY(process.waitForFinished(10000));
-    const double seconds = static_cast<double>(timer.nsecsElapsed()) / 1e9;
+    QVERIFY(process.waitForFinished(60000)); // a hang guard only
     output += process.readAll();
-    qInfo("SIGINT mid-bake: the process was gone %.3f s later", seconds);
     QCOMPARE(process.exitStatus(), QProcess::NormalExit);
     QCOMPARE(process.exitCode(), 130);
-    QVERIFY(output.contains("error: interrupted (SIGINT): stopped, temporary files removed"));
     QCOMPARE(difference(before, snapshot(folder)), QString());
-    // A hang guard, not a speed target: the handler exits at once, so anything near a second
-    // means the signal was not acted on.
-    QVERIFY2(seconds < 0.5, qPrintable(QString::number(seconds)));
+    // Acted on at once, whatever the machine's speed: the handler's sentence is the last thing
+    // the process wrote (it exits as it writes it), and the bake never got to its end.
+    const QByteArray said = "error: interrupted (SIGINT): stopped, temporary files removed\n";
+    QVERIFY2(output.endsWith(said), output.constData());
+    QVERIFY2(!output.contains("100%") && !output.contains("wrote"), output.constData());
     CliRun run;
     run.status = 130;
     record(run, true, false, 0);

@@ -98,7 +98,7 @@ void FaultValuesTest::seedIsDecimal() {
     QVERIFY(files.value("seed-010.png") != files.value("seed-8.png"));
     PX_EXPECT_CLEAN_FAILURE(
         m_dir, (QStringList{"sample", "noise", "--seed", "0x10", "--out", "seed-hex.png"}), {}, 2,
-        "0x10", "--seed: \"0x10\" is not a decimal integer");
+        "0x10", "--seed: '0x10' is not a number");
 }
 
 // A relative XDG_CACHE_HOME is invalid (the XDG base directory spec): the default under HOME is

@@ -9,5 +9,7 @@
 namespace px::studio::test {
 
 std::map<int, int> threadNicesInLoop(BackgroundArena& arena); // thread id -> nice value
+// The same in TBB's default arena, where loads, exports and the bench run.
+std::map<int, int> threadNicesInDefaultLoop();
 
 } // namespace px::studio::test

@@ -1,6 +1,7 @@
 #include "jobs/BackgroundPriority.h"
 
 #include <future>
+#include <memory>
 #include <tbb/task_arena.h>
 #include <tbb/task_scheduler_observer.h>
 #include <thread>
@@ -56,7 +57,9 @@ thread_local int WorkerPriority::t_before = 0;
 
 struct BackgroundArena::Impl {
     tbb::task_arena arena;
-    WorkerPriority observer{arena};
+    // Only where a worker can be raised again: TBB's workers serve every arena after this one.
+    std::unique_ptr<WorkerPriority> observer =
+        canRaisePriority() ? std::make_unique<WorkerPriority>(arena) : nullptr;
 };
 
 BackgroundArena::BackgroundArena() : m_impl(std::make_unique<Impl>()) {}
@@ -65,6 +68,10 @@ BackgroundArena::~BackgroundArena() = default;
 
 void BackgroundArena::execute(const std::function<void()>& work) {
     m_impl->arena.execute(work);
+}
+
+bool BackgroundArena::lowersWorkers() const {
+    return m_impl->observer != nullptr;
 }
 
 int thisThreadsNice() {

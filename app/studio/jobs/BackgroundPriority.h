@@ -19,10 +19,13 @@ inline constexpr int kBackgroundNice = 10;
 void lowerThisThreadsPriority();
 
 // A TBB arena whose worker threads run at kBackgroundNice while they work in it, and at their own
-// priority again once they leave it where the system lets a thread raise its priority (root,
-// CAP_SYS_NICE, or an RLIMIT_NICE allowing it; elsewhere a worker that served it stays lower).
-// The thread that calls execute() keeps its own priority. Other TBB work (an environment's
-// prefilter, the bench, exports) runs in TBB's default arena, untouched.
+// priority again once they leave it. TBB's workers are shared by every arena, so a worker is
+// lowered only where the system lets it rise again (root, CAP_SYS_NICE, or an RLIMIT_NICE
+// allowing it): for an ordinary user (RLIMIT_NICE 0) a lowered worker would stay at
+// kBackgroundNice and run every later job of the default arena (an environment's prefilter, the
+// bench, exports) at background priority. There the workers keep their priority, and only the
+// bake's own thread (lowerThisThreadsPriority) runs lower. The thread that calls execute() keeps
+// its own priority.
 class BackgroundArena {
 public:
     BackgroundArena();
@@ -32,6 +35,8 @@ public:
 
     // Runs `work` in the arena (its parallel loops run on the arena's workers); blocks.
     void execute(const std::function<void()>& work);
+    // Whether the workers are lowered while they work here (see above).
+    bool lowersWorkers() const;
 
 private:
     struct Impl;

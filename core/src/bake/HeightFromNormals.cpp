@@ -1,11 +1,11 @@
 #include "parallax/bake/HeightFromNormals.h"
 
 #include "bake/BakeProgress.h"
+#include "bake/Dft.h"
 
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <kissfft/kissfft.hh>
 #include <numbers>
 #include <tbb/parallel_for.h>
 #include <vector>
@@ -17,9 +17,10 @@ namespace {
 using Complex = std::complex<double>;
 
 // One axis of the separable transform: the DFT of length n (periodic), or the DCT-II of length n
-// through a DFT of length 2n (Makhoul's mirror: the even extension has only cosines). Not to be
-// shared between threads: kissfft's const transform() writes a mutable scratch buffer for factors
-// other than 2-5 (a shared one gave wrong heights in 5 runs of 12), so each parallel chunk copies.
+// through a DFT of length 2n (Makhoul's mirror: the even extension has only cosines), each
+// O(n log n) at any n (Dft.h). Not to be shared between threads: kissfft's const transform()
+// writes a mutable scratch buffer for factors other than 2-5 (a shared one gave wrong heights in
+// 5 runs of 12), and so does the Dft's, so each parallel chunk copies.
 class AxisTransform {
 public:
     AxisTransform(int n, bool periodic)
@@ -51,7 +52,7 @@ private:
         if (m_periodic) {
             for (int i = 0; i < n; ++i)
                 in[i] = data[i * stride];
-            (back ? m_inverse : m_forward).transform(in, out);
+            (back ? m_inverse : m_forward).transform(in, out, m_work);
             const double norm = back ? 1.0 / n : 1.0;
             for (int i = 0; i < n; ++i)
                 data[i * stride] = out[i] * norm;
@@ -62,7 +63,7 @@ private:
             // X_k = 1/2 e^{-i pi k / 2n} Y_k, Y the DFT of x followed by x reversed.
             for (int i = 0; i < n; ++i)
                 in[i] = in[2 * n - 1 - i] = data[i * stride].real();
-            m_forward.transform(in, out);
+            m_forward.transform(in, out, m_work);
             for (int k = 0; k < n; ++k)
                 data[k * stride] = 0.5 * (std::polar(1.0, -pi * k / (2.0 * n)) * out[k]).real();
             return;
@@ -72,14 +73,15 @@ private:
             in[k] = k < n ? (k == 0 ? 1.0 : 2.0) * data[k * stride].real() *
                                 std::polar(1.0, pi * k / (2.0 * n))
                           : Complex(0.0);
-        m_inverse.transform(in, out);
+        m_inverse.transform(in, out, m_work);
         for (int i = 0; i < n; ++i)
             data[i * stride] = out[i].real() / n;
     }
 
     int m_n;
     bool m_periodic;
-    kissfft<double> m_forward, m_inverse;
+    bake::Dft m_forward, m_inverse;
+    mutable std::vector<Complex> m_work; // the Dft's scratch
 };
 
 // Solves (Dx'Dx + Dy'Dy) h = f for h with zero mean, Dx and Dy forward differences with
@@ -157,33 +159,49 @@ Result<DerivedHeight> heightFromNormals(const Image& normals,
     DerivedHeight out;
 
     // Slopes in uv units per texel step: dh/du = -nx/nz, dh/dv = +ny/nz under OpenGL green
-    // (docs/conventions.md §3). Computed where needed, not stored: an 8192² map holds only f.
+    // (docs/conventions.md §3), less the mean slope unless it is kept. Computed where needed, not
+    // stored: an 8192² map holds only f.
     const double greenSign = options.green == NormalGreen::OpenGL ? 1.0 : -1.0;
     const std::size_t N = static_cast<std::size_t>(W) * H;
     auto nz = [&](int x, int y) { return std::max(2.0 * normals.at(x, y, 2) - 1.0, 0.05); };
-    auto p = [&](int x, int y) { return -(2.0 * normals.at(x, y, 0) - 1.0) / nz(x, y) / W; };
-    auto q = [&](int x, int y) {
-        return greenSign * (2.0 * normals.at(x, y, 1) - 1.0) / nz(x, y) / H;
+    double tiltP = 0.0, tiltQ = 0.0;
+    auto p = [&](int x, int y) {
+        return -(2.0 * normals.at(x, y, 0) - 1.0) / nz(x, y) / W - tiltP;
     };
-    // A map tiles when its seams are like its inside and it does not climb on average (a ramp's
-    // normals tile, its height cannot).
-    if (options.periodic) {
-        out.periodic = *options.periodic;
-    } else {
-        double meanP = 0.0, meanQ = 0.0, sumP = 0.0, sumQ = 0.0;
+    auto q = [&](int x, int y) {
+        return greenSign * (2.0 * normals.at(x, y, 1) - 1.0) / nz(x, y) / H - tiltQ;
+    };
+    double meanP = 0.0, meanQ = 0.0;
+    for (int y = 0; y < H; ++y) {
+        for (int x = 0; x < W; ++x) {
+            meanP += p(x, y);
+            meanQ += q(x, y);
+        }
+    }
+    meanP /= static_cast<double>(N);
+    meanQ /= static_cast<double>(N);
+    // A map tiles when its seams are like its inside. With its mean slope removed, that is all:
+    // a biased normal map of a tiling set tiles. A kept slope (a ramp, whose normals tile too)
+    // cannot be periodic: then only a map that does not climb on average tiles.
+    double rmsP = 0.0, rmsQ = 0.0;
+    if (options.keepTilt) {
         for (int y = 0; y < H; ++y) {
             for (int x = 0; x < W; ++x) {
-                const double a = p(x, y), b = q(x, y);
-                meanP += a;
-                meanQ += b;
-                sumP += a * a;
-                sumQ += b * b;
+                rmsP += p(x, y) * p(x, y);
+                rmsQ += q(x, y) * q(x, y);
             }
         }
-        const double n = static_cast<double>(N);
-        const bool level = std::abs(meanP / n) <= 0.1 * std::sqrt(sumP / n) + 1e-12 &&
-                           std::abs(meanQ / n) <= 0.1 * std::sqrt(sumQ / n) + 1e-12;
-        out.periodic = level && tiles(normals);
+        rmsP = std::sqrt(rmsP / static_cast<double>(N));
+        rmsQ = std::sqrt(rmsQ / static_cast<double>(N));
+    }
+    const bool level = !options.keepTilt || (std::abs(meanP) <= 0.1 * rmsP + 1e-12 &&
+                                             std::abs(meanQ) <= 0.1 * rmsQ + 1e-12);
+    out.periodic = options.periodic ? *options.periodic : level && tiles(normals);
+    if (!options.keepTilt || out.periodic) {
+        tiltP = meanP;
+        tiltQ = meanQ;
+        out.tiltU = meanP * W;
+        out.tiltV = meanQ * H;
     }
     // b = the slope of each step (x to x+1, y to y+1), averaged from the texel centres at its
     // ends; free borders have no step past the edge.

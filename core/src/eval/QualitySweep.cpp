@@ -1,5 +1,6 @@
 #include "parallax/eval/QualitySweep.h"
 
+#include "parallax/NumberText.h"
 #include "parallax/trace/Tracer.h"
 
 #include <algorithm>
@@ -140,13 +141,24 @@ Result<std::vector<BenchSetting>> parseSweep(std::string_view spec) {
         const std::string value = trim(values.substr(start, comma - start));
         start = comma + 1;
         TraceParams p = ti.defaults;
-        int a = 0, b = 0;
-        char dash = 0, extra = 0;
-        const int fields = std::sscanf(value.c_str(), "%d%c%d%c", &a, &dash, &b, &extra);
-        const bool ok = parameter == "layers" ? fields == 3 && dash == '-' : fields == 1;
-        if (!ok)
-            return Error{"'" + value + "' is not a value of " + parameter +
-                         (parameter == "layers" ? " (MIN-MAX)" : "")};
+        // One integer, or MIN-MAX for layers, each within the parameter's range (never wrapped).
+        const std::string what = name + ":" + parameter;
+        const std::size_t dash = parameter == "layers" ? value.find('-', 1) : std::string::npos;
+        if (parameter == "layers" && dash == std::string::npos)
+            return Error{"'" + value + "' is not a value of layers (MIN-MAX)"};
+        const long long low = parameter == "layers" ? 1 : parameter == "max-steps" ? 1 : 0;
+        const long long high = parameter == "layers"      ? kMaxLayersLimit
+                               : parameter == "max-steps" ? kMaxStepsLimit
+                                                          : kMaxRefineLimit;
+        Result<long long> first = parseInteger(value.substr(0, dash), what, low, high);
+        if (!first)
+            return first.error();
+        Result<long long> second = dash == std::string::npos
+                                       ? first
+                                       : parseInteger(value.substr(dash + 1), what, low, high);
+        if (!second)
+            return second.error();
+        const int a = static_cast<int>(*first), b = static_cast<int>(*second);
         if (parameter == "layers") {
             p.minLayers = a;
             p.maxLayers = b;

@@ -1,5 +1,6 @@
 #include "parallax/material/TextureSet.h"
 
+#include "parallax/io/Inputs.h"
 #include "parallax/material/MapFileName.h"
 #include "parallax/material/MapKind.h"
 
@@ -8,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <sys/stat.h>
 
 namespace px {
 
@@ -33,6 +35,22 @@ bool unreadImageFormat(const std::string& path) {
             return true;
     }
     return false;
+}
+
+// What a path that is there but is no regular file is ("a FIFO (named pipe)", "a symbolic link
+// to nothing that exists", "a folder"); empty for a regular file or a path that is not there (a
+// list of names the caller made up).
+std::string notARegularFile(const std::string& path) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) != 0)
+        return {};
+    if (S_ISLNK(st.st_mode)) {
+        struct stat target {};
+        if (::stat(path.c_str(), &target) != 0)
+            return "a symbolic link to nothing that exists";
+        st = target;
+    }
+    return S_ISREG(st.st_mode) ? std::string() : fileKind(st.st_mode);
 }
 
 // One file as the grouping sees it.
@@ -70,9 +88,13 @@ Grouping group(const std::vector<std::string>& files) {
     for (const std::string& file : files) {
         Entry e;
         e.path = file;
-        e.image = isImageFileName(file);
+        // A FIFO, socket, device, dangling link or folder named like a map is said, never read.
+        const std::string kind = notARegularFile(file);
+        e.image = kind.empty() && isImageFileName(file);
         if (e.image)
             e.readings = readMapFileName(file);
+        if (!kind.empty())
+            e.why = kind + ", not a regular file: not read";
         g.entries.push_back(std::move(e));
     }
     // The names that spell each stem by a firm reading (a separated tag, or no tag) or a glued
@@ -103,6 +125,8 @@ Grouping group(const std::vector<std::string>& files) {
         g.sets.try_emplace(lower(name), name);
     }
     for (Entry& e : g.entries) {
+        if (!e.image && !e.why.empty())
+            continue; // not a regular file
         if (!e.image) {
             e.why = unreadImageFormat(e.path) ? "an image format not read here (" +
                                                     lower(fs::path(e.path).extension().string()) +
@@ -218,17 +242,23 @@ Result<std::vector<std::string>> folderFiles(const std::string& folder) {
     std::vector<std::string> files;
     std::vector<fs::path> folders;
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-        if (it->is_regular_file(ec))
-            files.push_back(it->path().string());
-        else if (it->is_directory(ec) && !it->path().filename().string().starts_with("."))
+        const std::string name = it->path().filename().string();
+        if (name.starts_with("."))
+            continue;
+        // A folder named like an image is listed (and reported), not entered; anything else
+        // that is no regular file (a FIFO, a socket, a dangling link) is listed to be reported.
+        if (it->is_directory(ec) && !isImageFileName(name))
             folders.push_back(it->path());
+        else
+            files.push_back(it->path().string());
     }
     if (ec)
         return fileError(folder, "cannot read the folder (" + ec.message() + ")");
     // Downloads often keep the maps one folder down (Poly Haven's textures/ beside the .blend).
     for (const fs::path& sub : folders) {
         for (fs::directory_iterator it(sub, ec), end; !ec && it != end; it.increment(ec)) {
-            if (it->is_regular_file(ec))
+            const std::string name = it->path().filename().string();
+            if (!name.starts_with(".") && (!it->is_directory(ec) || isImageFileName(name)))
                 files.push_back(it->path().string());
         }
         if (ec)

@@ -7,17 +7,28 @@
 #include "parallax/material/MaterialNames.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 
 namespace px {
 
 namespace {
 
-// Agreement with the normal map's slopes that makes a grey image or an alpha channel a height map.
+// Agreement with the normal map's slopes that makes a normal map's alpha a height map (its
+// place in the classic parallax packing: a weak hint already).
 constexpr double kHeightAgreement = 0.5;
+// ... and a grey file named after the set, which is an albedo unless strong evidence says
+// otherwise: a near-grey albedo's shading follows the relief's slopes too (r = 0.54 was seen).
+constexpr double kUntaggedHeightAgreement = 0.8;
+// A file named as a normal map whose vectors do not point out of the surface on average (a
+// sky-box face named SKY_n: mean z -0.05) contradicts the name, and the name loses. A normal map
+// has mean z over 0.8 when normalised; an unnormalised one still over 0.4 (LearnOpenGL's
+// toy_box_normal.png: mean length 0.58, mean z 0.50, used as named with a warning).
+constexpr double kNormalMinMeanZ = 0.25;
 
 std::string fileName(const std::string& path) {
     return std::filesystem::path(path).filename().string();
@@ -143,6 +154,7 @@ private:
     ReliefReading m_alphaReading;
     const SetFile* m_albedo = nullptr;
     std::vector<const SetFile*> m_untagged;
+    std::set<const SetFile*> m_contradicted; // named as normal maps, whose texels say otherwise
 };
 
 void Importer::chooseNormal() {
@@ -156,6 +168,22 @@ void Importer::chooseNormal() {
     });
     for (const SetFile* f : named(MapRole::NormalGloss))
         normals.push_back(f);
+    // A name contradicted by the texels is no normal map: the next file named as one is tried.
+    for (const SetFile* f : normals) {
+        Result<Image> image = load(*f);
+        if (!image)
+            continue; // the problem is reported
+        const ImageTraits t = imageTraits(*image);
+        if (!t.normalLike && t.meanZ < kNormalMinMeanZ) {
+            skip(*f, f->why +
+                         ", but its texels are not a normal map: they do not point out of "
+                         "the surface (mean z " +
+                         fixed2(t.meanZ) + ", mean length " + fixed2(t.meanLength) +
+                         "; a normal map's mean z is over 0.4): not used");
+            m_contradicted.insert(f);
+        }
+    }
+    std::erase_if(normals, [&](const SetFile* f) { return m_contradicted.contains(f); });
     m_normal = pick(normals, nullptr);
     // A "bump" file may be a normal map (older packs call normal maps bump maps); its texels say.
     for (const SetFile* f : named(MapRole::Bump)) {
@@ -227,7 +255,7 @@ void Importer::chooseHeight() {
             continue;
         Result<ReliefReading> reading = px::readRelief(channelField(*image, 0), *normals,
                                                        WrapMode::Repeat, false, m_normal->path);
-        if (reading && reading->fromData && reading->score >= kHeightAgreement) {
+        if (reading && reading->fromData && reading->score >= kUntaggedHeightAgreement) {
             m_height = f;
             use(*f, "height map",
                 f->why + ", grey, and its slopes follow the normal map's (agreement " +
@@ -546,6 +574,13 @@ Status deriveHeight(ImportedSet& set, const BakeControl& control) {
                          "% of the slopes left unexplained): a guess at the relief, not a "
                          "measured one. Height scale " +
                          shortNumber(derived->heightScale) + " matches the normal map's slopes.";
+    // The mean slope is no relief: said, so a user who wanted a ramp knows where it went.
+    if (std::max(std::abs(derived->tiltU), std::abs(derived->tiltV)) > 0.01 * derived->heightScale)
+        set.relief.summary += " Removed from it: the normal map's mean slope (a tilt of " +
+                              shortNumber(derived->tiltU) + " across the tile in u, " +
+                              shortNumber(derived->tiltV) +
+                              " in v, in uv units: the bias of its red and green), which would "
+                              "have been a ramp across the tile.";
     set.notes.push_back("The height map is derived from " + normal +
                         ", marked so in the "
                         "material and in exports.");
@@ -591,8 +626,32 @@ std::vector<std::string> importSummary(const ImportedSet& set) {
         if (!f.used)
             lines.push_back("Not used: " + fileName(f.path) + " (" + f.why + ")");
     }
-    for (const SkippedFile& f : set.plan.ignored)
-        lines.push_back("Ignored: " + fileName(f.path) + " (" + f.why + ")");
+    // Other sets' files one a line while they are few; in a library folder (hundreds of sets)
+    // they are one line, so the set's own report stays readable.
+    constexpr std::size_t kListedOthers = 8;
+    const std::string otherSet = "belongs to the set ";
+    std::vector<const SkippedFile*> others;
+    std::set<std::string> otherSets;
+    for (const SkippedFile& f : set.plan.ignored) {
+        if (f.why.starts_with(otherSet)) {
+            others.push_back(&f);
+            otherSets.insert(f.why.substr(otherSet.size()));
+        }
+    }
+    const bool summarised = others.size() > kListedOthers;
+    for (const SkippedFile& f : set.plan.ignored) {
+        if (!summarised || !f.why.starts_with(otherSet))
+            lines.push_back("Ignored: " + fileName(f.path) + " (" + f.why + ")");
+    }
+    if (summarised) {
+        std::string names;
+        for (auto it = otherSets.begin();
+             it != otherSets.end() && std::distance(otherSets.begin(), it) < 3; ++it)
+            names += (names.empty() ? "" : ", ") + *it;
+        lines.push_back("Ignored: " + std::to_string(others.size()) + " files of " +
+                        std::to_string(otherSets.size()) + " other texture sets (" + names +
+                        (otherSets.size() > 3 ? ", ..." : "") + "), each imported on its own");
+    }
     return lines;
 }
 

@@ -20,6 +20,12 @@ namespace {
 // few times the text, and the refusal must stay within a few hundred MB.
 constexpr std::uint64_t kMaxJsonBytes = 64ull << 20;
 
+// Deeper JSON than this is refused: Assimp's glTF parser (RapidJSON) recurses once a level, and
+// 1,000,000 nested arrays in an `extras` overflow its stack. glTF itself nests about 8 deep.
+constexpr std::size_t kMaxJsonDepth = 256;
+// The node hierarchy is walked recursively too (by Assimp and by the loader).
+constexpr std::size_t kMaxNodeDepth = 1024;
+
 constexpr std::uint32_t kGlbMagic = 0x46546C67u;  // "glTF"
 constexpr std::uint32_t kJsonChunk = 0x4E4F534Au; // "JSON"
 constexpr std::uint32_t kBinChunk = 0x004E4942u;  // "BIN\0"
@@ -36,6 +42,37 @@ const json& member(const json& object, const char* key) {
 std::uint32_t little32(const unsigned char* p) {
     return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
            static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+}
+
+// The deepest nesting of arrays and objects in JSON text (strings skipped).
+std::size_t jsonDepth(const std::string& text) {
+    std::size_t depth = 0, deepest = 0;
+    bool inString = false, escaped = false;
+    for (const char c : text) {
+        if (inString) {
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return deepest;
+}
+
+// a * b + c, saturating (counts a file claims may be near 2^64).
+std::uint64_t mulAdd(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+    constexpr std::uint64_t most = ~std::uint64_t{0};
+    if (b != 0 && a > (most - c) / b)
+        return most;
+    return a * b + c;
 }
 
 // Where a buffer's bytes are.
@@ -81,8 +118,14 @@ private:
                    std::uint64_t binLength);
     Status images(const json& root);
     Status views(const json& root);
-    Result<std::uint64_t> accessorCount(const json& root, std::uint64_t index,
-                                        const std::string& what);
+    struct Accessor {
+        std::uint64_t count = 0, components = 0;
+    };
+    Result<Accessor> accessor(const json& root, std::uint64_t index, const std::string& what);
+    // Adds one use of an accessor, `count` elements of `components` scalars, to what Assimp
+    // decodes; refused past the limit.
+    Status use(std::uint64_t count, std::uint64_t components, std::uint64_t limit);
+    Status nodeTree(const json& root);
     Result<std::vector<std::uint32_t>> indices(const json& accessor, const std::string& what);
     Status read(const View& view, std::uint64_t at, void* out, std::size_t bytes);
 
@@ -91,6 +134,7 @@ private:
     std::vector<InputFile> m_opened; // external buffers
     std::vector<Buffer> m_buffers;
     std::vector<View> m_views;
+    std::uint64_t m_scalars = 0; // decoded by Assimp, over every accessor use
 };
 
 // Decoded length of base64 text, or nullopt when it is not base64.
@@ -251,10 +295,11 @@ std::uint64_t components(const std::string& type) {
     return 0;
 }
 
-// The element count of accessor `index`, after checking that every element it claims lies in
-// its buffer view (and its sparse part in theirs).
-Result<std::uint64_t> Checker::accessorCount(const json& root, std::uint64_t index,
-                                             const std::string& what) {
+// Accessor `index`'s element count and size, after checking that every element it claims lies in
+// its buffer view (and its sparse part in theirs). An accessor without a view is zeros: its count
+// is bounded by the data limit alone (use()).
+Result<Checker::Accessor> Checker::accessor(const json& root, std::uint64_t index,
+                                            const std::string& what) {
     const json& list = member(root, "accessors");
     if (!list.is_array() || index >= list.size())
         return bad(what + " names accessor " + std::to_string(index) + ", which is not there");
@@ -266,8 +311,8 @@ Result<std::uint64_t> Checker::accessorCount(const json& root, std::uint64_t ind
     Result<std::uint64_t> type = count(a, "componentType", name);
     if (!n || !type)
         return !n ? n.error() : type.error();
-    const std::uint64_t element =
-        componentBytes(*type) * components(a.value("type", std::string()));
+    const std::uint64_t scalars = components(a.value("type", std::string()));
+    const std::uint64_t element = componentBytes(*type) * scalars;
     if (element == 0)
         return bad(name + " has an unknown type or component type");
     auto fits = [&](const json& holder, std::uint64_t elements, std::uint64_t size,
@@ -311,7 +356,7 @@ Result<std::uint64_t> Checker::accessorCount(const json& root, std::uint64_t ind
         if (Status s = fits(member(*sparse, "values"), *k, element, name + "'s sparse values"); !s)
             return s.error();
     }
-    return *n;
+    return Accessor{*n, scalars};
 }
 
 Status Checker::read(const View& view, std::uint64_t at, void* out, std::size_t bytes) {
@@ -373,6 +418,81 @@ Result<std::vector<std::uint32_t>> Checker::indices(const json& a, const std::st
     return values;
 }
 
+// The faces Assimp makes of `corners` corners in glTF primitive mode `mode` (0 to 6).
+std::uint64_t facesOf(std::uint64_t mode, std::uint64_t corners) {
+    switch (mode) {
+    case 0: // POINTS
+    case 2: // LINE_LOOP
+        return corners;
+    case 1: // LINES
+        return corners / 2;
+    case 3: // LINE_STRIP
+        return corners > 1 ? corners - 1 : 0;
+    case 4: // TRIANGLES
+        return corners / 3;
+    default: // TRIANGLE_STRIP, TRIANGLE_FAN
+        return corners > 2 ? corners - 2 : 0;
+    }
+}
+
+Status Checker::use(std::uint64_t count, std::uint64_t components, std::uint64_t limit) {
+    m_scalars = mulAdd(count, components, m_scalars);
+    if (m_scalars > limit)
+        return fileError(m_scope.meshFile(),
+                         "its accessors hold more than " + std::to_string(limit) +
+                             " values (meshes, morph targets, skins and animations together), "
+                             "more than a mesh within the preview's triangle limit can use");
+    return success();
+}
+
+// Nodes form trees (glTF 2.0 §3.5.3): each node the child of at most one, no cycle, no deeper than
+// kMaxNodeDepth. A cycle would recurse without end, a node shared by many parents multiply.
+Status Checker::nodeTree(const json& root) {
+    const json& nodes = member(root, "nodes");
+    if (!nodes.is_array())
+        return bad("\"nodes\" is not an array");
+    constexpr std::size_t kNone = ~std::size_t{0};
+    std::vector<std::size_t> parent(nodes.size(), kNone);
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const json& children = member(nodes[i], "children");
+        if (!children.is_array())
+            return bad("node " + std::to_string(i) + "'s children are not an array");
+        for (const json& child : children) {
+            if (!child.is_number_unsigned() || child.get<std::uint64_t>() >= nodes.size())
+                return bad("node " + std::to_string(i) + " has a child that is not a node");
+            const auto c = child.get<std::size_t>();
+            if (parent[c] != kNone || c == i)
+                return bad("node " + std::to_string(c) +
+                           " is the child of more than one node (or of itself): the nodes do not "
+                           "form a tree");
+            parent[c] = i;
+        }
+    }
+    // Depth of each node, each computed once (0: not yet); a walk longer than the node count
+    // has met a cycle.
+    std::vector<std::size_t> depth(nodes.size(), 0);
+    std::vector<std::size_t> chain;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        chain.clear();
+        std::size_t at = i;
+        while (at != kNone && depth[at] == 0) {
+            chain.push_back(at);
+            if (chain.size() > nodes.size())
+                return bad("its nodes form a cycle (node " + std::to_string(i) +
+                           " is its own ancestor)");
+            at = parent[at];
+        }
+        std::size_t d = at == kNone ? 0 : depth[at];
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+            depth[*it] = ++d;
+            if (d > kMaxNodeDepth)
+                return bad("its node hierarchy is more than " + std::to_string(kMaxNodeDepth) +
+                           " levels deep");
+        }
+    }
+    return success();
+}
+
 Status Checker::run(const json& root, std::optional<std::uint64_t> binOffset,
                     std::uint64_t binLength, std::size_t maxTriangles) {
     if (!root.is_object())
@@ -388,23 +508,48 @@ Status Checker::run(const json& root, std::optional<std::uint64_t> binOffset,
         return s;
     if (Status s = views(root); !s)
         return s;
+    if (Status s = nodeTree(root); !s)
+        return s;
 
-    // Triangles per mesh, times the nodes that draw it.
+    // Assimp decodes every accessor each time it is used: a primitive's attributes and indices,
+    // each morph target (at the primitive's vertex count), a skinned mesh again for every node
+    // drawing it, each animation channel's input and output. Summed, no more values than a mesh
+    // within the triangle limit can use: kScalarsPerCorner for each of its three corners a
+    // triangle (position, normal, tangent, two uv sets, a colour, joints and weights, with room
+    // for targets and animation).
+    constexpr std::uint64_t kScalarsPerCorner = 32;
+    const std::uint64_t limit =
+        mulAdd(3 * std::max<std::uint64_t>(maxTriangles, 1), kScalarsPerCorner, 0);
     const json& meshes = member(root, "meshes");
     if (!meshes.is_array())
         return bad("\"meshes\" is not an array");
-    std::vector<std::uint64_t> instances(meshes.size(), 0);
+    std::vector<std::uint64_t> instances(meshes.size(), 0), meshScalars(meshes.size(), 0);
     const json& nodes = member(root, "nodes");
-    for (const json& node : nodes.is_array() ? nodes : member(json(), "")) {
+    for (const json& node : nodes) {
         if (node.is_object() && node.contains("mesh") && node["mesh"].is_number_unsigned() &&
             node["mesh"].get<std::uint64_t>() < meshes.size())
             ++instances[node["mesh"].get<std::size_t>()];
     }
-    std::uint64_t triangles = 0;
+    // Triangles as the loader keeps them (times the nodes drawing each mesh); points and lines
+    // as Assimp builds them (one face each) before they are sorted out.
+    std::uint64_t triangles = 0, otherFaces = 0;
+    const auto tooMany = [&](std::uint64_t tris, std::uint64_t others) -> Status {
+        if (others == 0 && tris > maxTriangles)
+            return tooManyTriangles(m_scope.meshFile(), static_cast<std::size_t>(tris),
+                                    maxTriangles);
+        if (tris + others > maxTriangles)
+            return fileError(m_scope.meshFile(),
+                             std::to_string(tris + others) +
+                                 " points, lines and triangles, more than the preview's limit "
+                                 "of " +
+                                 std::to_string(maxTriangles));
+        return success();
+    };
     for (std::size_t m = 0; m < meshes.size(); ++m) {
         const json& primitives = member(meshes[m], "primitives");
         if (!primitives.is_array())
             return bad("mesh " + std::to_string(m) + "'s primitives are not an array");
+        const std::uint64_t before = m_scalars;
         std::uint64_t inMesh = 0;
         for (std::size_t p = 0; p < primitives.size(); ++p) {
             const std::string what =
@@ -415,55 +560,150 @@ Status Checker::run(const json& root, std::optional<std::uint64_t> binOffset,
             Result<std::uint64_t> mode = count(primitive, "mode", what, 4);
             if (!mode)
                 return mode.error();
+            if (*mode > 6)
+                return bad(what + " has mode " + std::to_string(*mode) +
+                           ", which glTF does not define");
             std::uint64_t vertices = 0;
-            for (const auto& [name, accessor] : primitive.at("attributes").items()) {
-                if (!accessor.is_number_unsigned())
+            for (const auto& [name, index] : primitive.at("attributes").items()) {
+                if (!index.is_number_unsigned())
                     return bad(what + "'s attribute " + name + " is not an accessor index");
-                Result<std::uint64_t> n =
-                    accessorCount(root, accessor.get<std::uint64_t>(), what + "'s " + name);
-                if (!n)
-                    return n.error();
+                Result<Accessor> a =
+                    accessor(root, index.get<std::uint64_t>(), what + "'s " + name);
+                if (!a)
+                    return a.error();
+                if (Status s = use(a->count, a->components, limit); !s)
+                    return s;
                 if (name == "POSITION")
-                    vertices = *n;
+                    vertices = a->count;
+            }
+            const json& targets = member(primitive, "targets");
+            if (!targets.is_array())
+                return bad(what + "'s morph targets are not an array");
+            for (std::size_t t = 0; t < targets.size(); ++t) {
+                if (!targets[t].is_object())
+                    return bad(what + "'s morph target " + std::to_string(t) + " is not an object");
+                for (const auto& [name, index] : targets[t].items()) {
+                    const std::string part =
+                        what + "'s morph target " + std::to_string(t) + " " + name;
+                    if (!index.is_number_unsigned())
+                        return bad(part + " is not an accessor index");
+                    Result<Accessor> a = accessor(root, index.get<std::uint64_t>(), part);
+                    if (!a)
+                        return a.error();
+                    if (Status s = use(std::max(a->count, vertices), a->components, limit); !s)
+                        return s;
+                }
             }
             std::uint64_t corners = vertices;
+            std::optional<std::uint64_t> indexAccessor;
             if (primitive.contains("indices")) {
                 Result<std::uint64_t> n = count(primitive, "indices", what);
                 if (!n)
                     return n.error();
-                Result<std::uint64_t> k = accessorCount(root, *n, what + "'s indices");
+                Result<Accessor> k = accessor(root, *n, what + "'s indices");
                 if (!k)
                     return k.error();
-                corners = *k;
-                if (*mode >= 4 && *mode <= 6 && corners <= 3 * std::uint64_t{maxTriangles} + 2) {
-                    Result<std::vector<std::uint32_t>> values =
-                        indices(member(root, "accessors").at(*n), what);
-                    if (!values)
-                        return values.error();
-                    for (std::size_t i = 0; i < values->size(); ++i) {
-                        if ((*values)[i] >= vertices)
-                            return fileError(m_scope.meshFile(),
-                                             what + ": index " + std::to_string((*values)[i]) +
-                                                 " (at position " + std::to_string(i) +
-                                                 ") is past the end of its " +
-                                                 std::to_string(vertices) + " vertices");
-                    }
+                if (Status s = use(k->count, k->components, limit); !s)
+                    return s;
+                corners = k->count;
+                indexAccessor = *n;
+            }
+            const std::uint64_t faces = facesOf(*mode, corners);
+            (*mode >= 4 ? inMesh : otherFaces) += faces;
+            if (Status s = tooMany(*mode >= 4 ? faces : 0, *mode >= 4 ? 0 : faces); !s)
+                return s;
+            if (indexAccessor) {
+                // As many as the limit allows at most: read and check every index.
+                Result<std::vector<std::uint32_t>> values =
+                    indices(member(root, "accessors").at(*indexAccessor), what);
+                if (!values)
+                    return values.error();
+                for (std::size_t i = 0; i < values->size(); ++i) {
+                    if ((*values)[i] >= vertices)
+                        return fileError(m_scope.meshFile(),
+                                         what + ": index " + std::to_string((*values)[i]) +
+                                             " (at position " + std::to_string(i) +
+                                             ") is past the end of its " +
+                                             std::to_string(vertices) + " vertices");
                 }
             }
-            if (*mode == 4)
-                inMesh += corners / 3;
-            else if (*mode == 5 || *mode == 6)
-                inMesh += corners > 2 ? corners - 2 : 0;
         }
-        triangles += inMesh * std::max<std::uint64_t>(instances[m], 1);
-        if (triangles > maxTriangles)
-            return tooManyTriangles(m_scope.meshFile(), static_cast<std::size_t>(triangles),
-                                    maxTriangles);
+        meshScalars[m] = m_scalars - before;
+        triangles = mulAdd(inMesh, std::max<std::uint64_t>(instances[m], 1), triangles);
+        if (Status s = tooMany(triangles, otherFaces); !s)
+            return s;
+    }
+
+    // A skinned mesh is copied for each node drawing it, with a bone per joint.
+    const json& skins = member(root, "skins");
+    if (!skins.is_array())
+        return bad("\"skins\" is not an array");
+    for (std::size_t i = 0; i < skins.size(); ++i) {
+        const std::string what = "skin " + std::to_string(i);
+        if (!skins[i].is_object())
+            return bad(what + " is not an object");
+        if (skins[i].contains("inverseBindMatrices")) {
+            Result<std::uint64_t> n = count(skins[i], "inverseBindMatrices", what);
+            if (!n)
+                return n.error();
+            Result<Accessor> a = accessor(root, *n, what + "'s inverse bind matrices");
+            if (!a)
+                return a.error();
+            if (Status s = use(a->count, a->components, limit); !s)
+                return s;
+        }
+    }
+    for (const json& node : nodes) {
+        if (!node.is_object() || !node.contains("skin") || !node.contains("mesh") ||
+            !node["mesh"].is_number_unsigned() ||
+            node["mesh"].get<std::uint64_t>() >= meshes.size())
+            continue;
+        if (Status s = use(meshScalars[node["mesh"].get<std::size_t>()], 1, limit); !s)
+            return s;
+    }
+
+    // Each channel's sampler is decoded for that channel: its input (times) and output (values).
+    const json& animations = member(root, "animations");
+    if (!animations.is_array())
+        return bad("\"animations\" is not an array");
+    for (std::size_t i = 0; i < animations.size(); ++i) {
+        const std::string what = "animation " + std::to_string(i);
+        const json& samplers = member(animations[i], "samplers");
+        const json& channels = member(animations[i], "channels");
+        if (!samplers.is_array() || !channels.is_array())
+            return bad(what + "'s samplers or channels are not an array");
+        for (std::size_t c = 0; c < channels.size(); ++c) {
+            const std::string channel = what + " channel " + std::to_string(c);
+            if (!channels[c].is_object())
+                return bad(channel + " is not an object");
+            Result<std::uint64_t> s = count(channels[c], "sampler", channel);
+            if (!s)
+                return s.error();
+            if (*s >= samplers.size() || !samplers[*s].is_object())
+                return bad(channel + " names sampler " + std::to_string(*s) +
+                           ", which is not there");
+            for (const char* key : {"input", "output"}) {
+                const std::string part = what + " sampler " + std::to_string(*s) + "'s " + key;
+                Result<std::uint64_t> n = count(samplers[*s], key, part);
+                if (!n)
+                    return n.error();
+                Result<Accessor> a = accessor(root, *n, part);
+                if (!a)
+                    return a.error();
+                if (Status u = use(a->count, a->components, limit); !u)
+                    return u;
+            }
+        }
     }
     return success();
 }
 
 Result<json> parseJson(const std::string& text, const MeshScope& scope) {
+    if (const std::size_t depth = jsonDepth(text); depth > kMaxJsonDepth)
+        return fileError(scope.meshFile(), "cannot read it as a mesh: its JSON nests " +
+                                               std::to_string(depth) + " levels deep, more than " +
+                                               "the " + std::to_string(kMaxJsonDepth) +
+                                               " the preview reads");
     try {
         return json::parse(text);
     } catch (const json::exception& e) {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <assimp/ProgressHandler.hpp>
+#include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <cctype>
@@ -17,6 +18,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <optional>
 #include <sstream>
 
 namespace px {
@@ -116,6 +118,52 @@ float fitIntoUnitSphere(MeshData& mesh) {
     return scale;
 }
 
+// Records every texture the scene's materials name as an input of the run, as Assimp read the
+// names (an MTL's "map_Kd my tex.png" is "my tex.png", whatever its line ends): no output may
+// replace one. Relative names are tried against the mesh's folder and each material library's.
+Status noteTextures(const aiScene& scene, const mesh::MeshScope& scope,
+                    const mesh::ScopedIoSystem& io) {
+    std::vector<std::filesystem::path> bases{{}};
+    for (const std::filesystem::path& opened : io.opened()) {
+        if (lowerExtension(opened.string()) == ".mtl")
+            bases.push_back(opened.parent_path());
+    }
+    for (unsigned m = 0; m < scene.mNumMaterials; ++m) {
+        const aiMaterial& material = *scene.mMaterials[m];
+        for (int type = aiTextureType_NONE; type <= AI_TEXTURE_TYPE_MAX; ++type) {
+            const auto t = static_cast<aiTextureType>(type);
+            for (unsigned i = 0; i < material.GetTextureCount(t); ++i) {
+                aiString name;
+                if (material.GetTexture(t, i, &name) != aiReturn_SUCCESS || name.length == 0 ||
+                    name.data[0] == '*' || std::string_view(name.C_Str()).starts_with("data:"))
+                    continue; // embedded
+                const std::string text = name.C_Str();
+                // Refused only when no reading of the name lies inside the root.
+                std::optional<Error> outside;
+                bool inside = false;
+                for (const std::string& reference : {text, mesh::percentDecoded(text)}) {
+                    for (const std::filesystem::path& base : bases) {
+                        Result<std::filesystem::path> path =
+                            scope.resolve(reference, "texture " + reference, base);
+                        if (!path) {
+                            outside = outside.value_or(path.error());
+                            continue;
+                        }
+                        inside = true;
+                        if (Status s =
+                                noteInput(path->string(), "a texture of mesh " + scope.meshFile());
+                            !s)
+                            return s;
+                    }
+                }
+                if (!inside && outside)
+                    return *outside;
+            }
+        }
+    }
+    return success();
+}
+
 } // namespace
 
 bool isMeshFile(const std::string& path) {
@@ -190,6 +238,8 @@ Result<LoadedMesh> loadMesh(const std::string& path, const MeshLoadOptions& opti
         return fileError(path,
                          "cannot read it as a mesh: " + (why.empty() ? "unknown error" : why));
     }
+    if (Status s = noteTextures(*scene, *scope, *io); !s)
+        return s.error();
 
     LoadedMesh out;
     out.file = path;

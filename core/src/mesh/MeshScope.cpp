@@ -138,6 +138,7 @@ Assimp::IOStream* ScopedIoSystem::Open(const char* file, const char* mode) {
         m_refusal = opened.error().message;
         return nullptr;
     }
+    m_opened.emplace_back(file);
     return new InputStream(std::move(*opened));
 }
 

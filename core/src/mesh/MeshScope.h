@@ -11,6 +11,7 @@
 #include <assimp/IOSystem.hpp>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace px::mesh {
 
@@ -52,10 +53,13 @@ public:
     Assimp::IOStream* Open(const char* file, const char* mode) override;
     void Close(Assimp::IOStream* stream) override;
     const std::string& refusal() const { return m_refusal; }
+    // Every file Assimp opened, in order (the mesh, its material libraries, buffers).
+    const std::vector<std::filesystem::path>& opened() const { return m_opened; }
 
 private:
     const MeshScope& m_scope;
     std::string m_refusal;
+    std::vector<std::filesystem::path> m_opened;
 };
 
 } // namespace px::mesh

@@ -7,14 +7,22 @@
 
 #include "ConventionSets.h"
 #include "TextureSets.h"
+#include "parallax/bake/NormalMapBaker.h"
 #include "parallax/image/ImageFile.h"
 #include "parallax/io/AtomicWrite.h"
+#include "parallax/material/MapContent.h"
 #include "parallax/material/MaterialFile.h"
+#include "parallax/material/ReliefReading.h"
+#include "parallax/sample/ProceduralMaps.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <unistd.h>
 
 using namespace px;
 using namespace px::test;
@@ -31,6 +39,12 @@ bool mentions(const std::vector<SkippedFile>& list, const std::string& file,
     return std::any_of(list.begin(), list.end(), [&](const SkippedFile& s) {
         return s.path.ends_with(file) && s.why.find(why) != std::string::npos;
     });
+}
+
+void writePng(const std::string& path, const Image& image) {
+    ImageWriteOptions options;
+    options.format = PixelFormat::UInt8;
+    QVERIFY(writeImage(path, image, options).ok());
 }
 
 std::string summaryOf(const ImportedSet& set) {
@@ -250,6 +264,138 @@ private slots:
         QVERIFY(!set);
         QVERIFY2(set.error().message.find("rock_ao.png") != std::string::npos,
                  set.error().message.c_str());
+    }
+
+    // A sky-box face named like a normal map (SKY_n beside SKY_s, SKY_e, SKY_w) is not one: its
+    // vectors do not point out of the surface (mean z -0.05), so it is reported and not used,
+    // and with nothing else to give relief the folder is no material.
+    void aNameTheTexelsContradictLoses() {
+        QTemporaryDir dir;
+        for (const char* face : {"SKY_n", "SKY_s", "SKY_e", "SKY_w"}) {
+            Image sky(48, 32, 3);
+            for (int y = 0; y < sky.height; ++y)
+                for (int x = 0; x < sky.width; ++x) {
+                    const float t = static_cast<float>(y) / (sky.height - 1);
+                    sky.at(x, y, 0) = 0.70f + 0.1f * t; // a pale sky: n = (0.4..0.6, 0.24, -0.05)
+                    sky.at(x, y, 1) = 0.62f;
+                    sky.at(x, y, 2) = 0.475f;
+                }
+            writePng(dir.filePath(QString(face) + ".png").toStdString(), sky);
+        }
+        const Result<TextureSetPlan> plan = planTextureSet(filesOf(dir), "dir");
+        QVERIFY2(plan, plan ? "" : plan.error().message.c_str());
+        const Result<ImportedSet> set = importTextureSet(*plan);
+        QVERIFY(!set);
+        QVERIFY2(set.error().message.find("has no height map and no normal map") !=
+                         std::string::npos &&
+                     set.error().message.find("SKY_n.png (tag _n, but its texels are not a normal "
+                                              "map: they do not point out of the surface (mean "
+                                              "z -0.05") != std::string::npos,
+                 set.error().message.c_str());
+        // Beside a real normal map of the set, the contradicted file gives way to it.
+        TextureSetSpec spec;
+        spec.stem = "SKY";
+        spec.albedoSuffix = false;
+        const WrittenSet written = writeTextureSet(dir.path().toStdString(), spec);
+        const Result<ImportedSet> real = importTextureSet(*planTextureSet(filesOf(dir), "dir"));
+        QVERIFY2(real, real ? "" : real.error().message.c_str());
+        QCOMPARE(real->material.maps.normal, written.normalFile);
+    }
+
+    // A near-grey albedo named after the set (NAME.png beside NAME_normal.png) whose shading
+    // follows the relief's slopes weakly is the albedo, not a height map: weak evidence does not
+    // override a name. Its agreement is made between 0.5 and 0.78 here, measured as the importer
+    // measures it.
+    void weakSlopeEvidenceDoesNotMakeAnAlbedoAHeightMap() {
+        QTemporaryDir dir;
+        const HeightField relief = makeProceduralMap(ProceduralMap::Noise, 64, 64, 3);
+        const HeightField other = makeProceduralMap(ProceduralMap::Noise, 64, 64, 9);
+        NormalBakeOptions bake;
+        writePng(dir.filePath("wall_normal.png").toStdString(), *bakeNormalMap(relief, bake));
+        const Result<Image> stored = readImage(dir.filePath("wall_normal.png").toStdString(), {});
+        QVERIFY(stored);
+        const Image& normals = *stored; // as the importer reads it
+        std::optional<double> agreement;
+        for (float w = 0.2f; w <= 0.9f && !agreement; w += 0.02f) {
+            Image albedo(64, 64, 3);
+            HeightField grey(64, 64);
+            for (int y = 0; y < 64; ++y)
+                for (int x = 0; x < 64; ++x) {
+                    const float v = 0.3f + 0.4f * (w * relief.at(x, y) + (1 - w) * other.at(x, y));
+                    grey.at(x, y) = std::round(v * 255.0f) / 255.0f;
+                    for (int c = 0; c < 3; ++c)
+                        albedo.at(x, y, c) = grey.at(x, y);
+                }
+            const Result<ReliefReading> r = readRelief(grey, normals, WrapMode::Repeat, false, "n");
+            if (r && r->fromData && r->score >= 0.5 && r->score < 0.78) {
+                agreement = r->score;
+                writePng(dir.filePath("wall.png").toStdString(), albedo);
+            }
+        }
+        QVERIFY2(agreement.has_value(), "no mix gave a weak agreement");
+        qInfo("agreement %.2f", *agreement);
+        const Result<ImportedSet> set = importTextureSet(*planTextureSet(filesOf(dir), "dir"));
+        QVERIFY2(set, set ? "" : set.error().message.c_str());
+        QVERIFY2(set->heightMissing, summaryOf(*set).c_str());
+        QVERIFY(set->material.maps.albedo.ends_with("wall.png"));
+    }
+
+    // Entries named like maps that are no regular files are reported by what they are, never
+    // read (a FIFO would hang a reader): a FIFO, a dangling link, a socket, a folder.
+    void specialFilesNamedLikeMapsAreReported() {
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        writeTextureSet(dir.path().toStdString(), spec);
+        const std::string base = dir.path().toStdString() + "/";
+        QVERIFY(::mkfifo((base + "rock_roughness.png").c_str(), 0600) == 0);
+        QVERIFY(::symlink((base + "gone.png").c_str(), (base + "rock_ao.png").c_str()) == 0);
+        QVERIFY(QDir().mkpath(dir.filePath("rock_metallic.png")));
+        const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+        QVERIFY(sock >= 0);
+        sockaddr_un address{};
+        address.sun_family = AF_UNIX;
+        const std::string socketPath = base + "rock_specular.png";
+        QVERIFY(socketPath.size() < sizeof address.sun_path);
+        std::copy(socketPath.begin(), socketPath.end(), address.sun_path);
+        QVERIFY(::bind(sock, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0);
+        const Result<TextureSetPlan> plan = planTextureSet(filesOf(dir), "dir");
+        ::close(sock);
+        QVERIFY2(plan, plan ? "" : plan.error().message.c_str());
+        QVERIFY(mentions(plan->ignored, "rock_roughness.png",
+                         "a FIFO (named pipe), not a regular "
+                         "file: not read"));
+        QVERIFY(mentions(plan->ignored, "rock_ao.png", "a symbolic link to nothing that exists"));
+        QVERIFY(mentions(plan->ignored, "rock_metallic.png", "a folder, not a regular file"));
+        QVERIFY(mentions(plan->ignored, "rock_specular.png", "a socket, not a regular file"));
+        const Result<ImportedSet> set = importTextureSet(*plan);
+        QVERIFY2(set, set ? "" : set.error().message.c_str());
+        const std::string summary = summaryOf(*set);
+        QVERIFY2(summary.find("Ignored: rock_roughness.png (a FIFO (named pipe)") !=
+                     std::string::npos,
+                 summary.c_str());
+        QVERIFY(set->material.maps.roughness.empty() && set->material.maps.ao.empty());
+    }
+
+    // In a library folder the other sets' files are one line of the report, not one each.
+    void otherSetsAreSummarisedOnBigFolders() {
+        QTemporaryDir dir;
+        TextureSetSpec spec;
+        writeTextureSet(dir.path().toStdString(), spec);
+        const int sets = 40 + static_cast<int>(QRandomGenerator::global()->bounded(60u));
+        for (int i = 0; i < sets; ++i)
+            for (const char* tag : {"_albedo", "_normal", "_height"})
+                QVERIFY(writeTextFile(
+                    dir.filePath(QString("set%1%2.png").arg(i).arg(tag)).toStdString(), "x"));
+        const Result<ImportedSet> set =
+            importTextureSet(*planTextureSet(filesOf(dir), "dir", "rock"));
+        QVERIFY2(set, set ? "" : set.error().message.c_str());
+        const std::vector<std::string> lines = importSummary(*set);
+        QVERIFY2(lines.size() < 20, summaryOf(*set).c_str());
+        const std::string summary = summaryOf(*set);
+        QVERIFY2(summary.find("Ignored: " + std::to_string(3 * sets) + " files of " +
+                              std::to_string(sets) +
+                              " other texture sets (set0, set1, set10, ...)") != std::string::npos,
+                 summary.c_str());
     }
 
     void aSetNeedsReliefAndAFolderOfNothingIsRefusedWithTheReport() {

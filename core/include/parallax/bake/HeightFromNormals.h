@@ -21,12 +21,21 @@ struct HeightFromNormalsOptions {
     // Whether the map tiles: unset tells it from the texels (the seams across the borders
     // against the steps inside).
     std::optional<bool> periodic;
+    // The normal map's mean slope is removed unless this is set: an 8-bit bias of its red or
+    // green (a mean of 115 for 128) is such a slope, and integrated it would be a ramp across the
+    // tile, a cliff at every border when tiled, and the largest part of the height scale. Kept,
+    // it is integrated with free borders only (a periodic height cannot climb).
+    bool keepTilt = false;
 };
 
 struct DerivedHeight {
     HeightField height;       // white = high, spanning [0, 1]
     float heightScale = 0.0f; // the relief's depth in uv units: the material's height scale
     bool periodic = false;    // which borders were used
+    // The mean slope removed (HeightFromNormalsOptions::keepTilt): how much a plane with the
+    // normal map's mean slope climbs across the tile along u and v, in uv units (the height
+    // scale's). Zero when it was kept.
+    double tiltU = 0.0, tiltV = 0.0;
     // How far the normal map is from being one surface's: RMS of the slopes not explained by the
     // height, over the RMS of the slopes (0: exactly a gradient field).
     double misfit = 0.0;

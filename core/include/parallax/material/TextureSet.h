@@ -48,8 +48,11 @@ std::vector<std::string> textureSetNames(const std::vector<std::string>& files);
 Result<TextureSetPlan> planTextureSet(const std::vector<std::string>& files,
                                       const std::string& source, const std::string& set = {});
 
-// The regular files of a folder and of the folders in it (one level, not hidden ones: downloads
-// keep maps in textures/ beside a .blend), sorted. Errors: not a folder, unreadable.
+// The files of a folder and of the folders in it (one level, not hidden ones: downloads keep maps
+// in textures/ beside a .blend), sorted. Entries that are no regular file (a FIFO, a socket, a
+// dangling link, a folder named like an image) are listed too, so that the plan reports them
+// (planTextureSet ignores them, saying what they are, and never reads them). Errors: not a
+// folder, unreadable.
 Result<std::vector<std::string>> folderFiles(const std::string& folder);
 
 } // namespace px
