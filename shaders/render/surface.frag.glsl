@@ -75,7 +75,9 @@ void main() {
     // Seen from below the tangent plane (interpolated normals near a silhouette) the view is held
     // at a grazing angle; pxBoundParallax bounds it and turns NaN into a straight-down view.
     vec2 P = pxBoundParallax(pxScale * vec2(d.x, d.y) / max(-d.z, 1.0e-4 * length(d)));
-#if defined(PX_TECHNIQUE_CONE) || defined(PX_TECHNIQUE_RELAXED_CONE) || defined(PX_TECHNIQUE_PYRAMID) || defined(PX_TECHNIQUE_EXACT)
+#if defined(PX_HAS_FOOTPRINT_REFERENCE)
+    pxUseHeightLevel(footprintLevel); // exact on the surface the marching techniques read
+#elif defined(PX_TECHNIQUE_CONE) || defined(PX_TECHNIQUE_RELAXED_CONE) || defined(PX_TECHNIQUE_PYRAMID) || defined(PX_TECHNIQUE_EXACT)
     pxUseHeightLevel(0); // the level the cone map and the pyramid describe
 #else
     pxUseHeightLevel(footprintLevel);

@@ -49,10 +49,12 @@ std::set<std::string> needed(const VariantKey& k) {
     }
     add({"pxModel", "pxViewProjection"});
     // Texture coordinates: read by the trace, by every map, and by the surface output.
+    const bool surface =
+        k.output == ShaderOutput::Surface || k.output == ShaderOutput::FootprintSurface;
     if (ti.parallax || k.albedoMap || k.surfaceMap || k.normalSource != NormalSource::None ||
-        k.output == ShaderOutput::Surface)
+        surface)
         add({"pxTiling"});
-    if (k.output == ShaderOutput::Surface) {
+    if (surface) {
         if (ti.parallax)
             add({"pxNormalMatrix", "pxCameraPos"});
         return u;

@@ -55,13 +55,14 @@ private slots:
             std::find(outliers.begin(), outliers.end(), 0) != outliers.end();
         const SurfaceErrors e = compareSurfaces(hits, exact, mapSide, mapSide);
         QCOMPARE(e.pixels, w * h - 1);
-        QVERIFY(e.p99Error < 0.021);
+        QVERIFY(e.techniqueError.p99 < 0.021);
         if (!firstIsOutlier) {
-            QVERIFY(std::abs(e.maxError - worst) < 1e-3);
+            QVERIFY(std::abs(e.techniqueError.max - worst) < 1e-3);
             QCOMPARE(e.otherSurface, other);
         }
         QVERIFY(e.otherSurface > 0);
-        QVERIFY(e.meanError > e.p99Error); // what the readout used to show alone
+        QVERIFY(e.techniqueError.mean >
+                e.techniqueError.p99); // what the readout used to show alone
         QCOMPARE(e.meanFetches, 12.0);
     }
 
@@ -128,8 +129,76 @@ private slots:
         const SurfaceErrors e = compareSurfaces(hits, exact, mapSide, mapSide, &region);
         QCOMPARE(e.offRegionPixels, off);
         QCOMPARE(e.pixels, w * h - off);
-        QVERIFY(e.maxError <= worstOn + 1e-3); // float uv: a few thousandths of a texel
-        QVERIFY(e.maxError < 0.51);
+        QVERIFY(e.techniqueError.max <= worstOn + 1e-3); // float uv: a few thousandths of a texel
+        QVERIFY(e.techniqueError.max < 0.51);
+    }
+
+    // Two references: the technique is measured against the exact hit on the level it reads,
+    // and that hit against level 0's is the filtering's error; each pixel weighs the area of
+    // the texture it covers, so a part of the surface drawn with more pixels counts no more.
+    void techniqueAndFilteringErrorsWeighedByArea_data() {
+        QTest::addColumn<unsigned>("seed");
+        const unsigned run = std::random_device{}();
+        for (unsigned seed : {5u, 42u, run})
+            QTest::addRow("seed%u", seed) << seed;
+    }
+    void techniqueAndFilteringErrorsWeighedByArea() {
+        QFETCH(unsigned, seed);
+        std::mt19937 rng(seed);
+        const int w = 40, h = 40, mapSide = 128;
+        // The top half of the view is near (0.001 tiles a pixel across), the bottom half far
+        // (0.004): each bottom pixel covers 4 times the area.
+        Image entry(w, h, 4), exact(w, h, 4), footprint(w, h, 4), hits(w, h, 4);
+        std::uniform_real_distribution<double> small(0.0, 0.2), big(0.5, 1.5);
+        double v = 0.0;
+        for (int y = 0; y < h; ++y) {
+            const double step = y < h / 2 ? 0.001 : 0.004;
+            for (int x = 0; x < w; ++x) {
+                const double u = x * step;
+                entry.at(x, y, 0) = static_cast<float>(u);
+                entry.at(x, y, 1) = static_cast<float>(v);
+                entry.at(x, y, 2) = 0.0f;
+                // Near: the technique is off by little and the filtering not at all; far: the
+                // technique the same, the filtering 0.5 to 1.5 texels.
+                const double te = small(rng), fe = y < h / 2 ? 0.0 : big(rng);
+                for (Image* image : {&exact, &footprint, &hits}) {
+                    image->at(x, y, 1) = static_cast<float>(v);
+                    image->at(x, y, 2) = 0.5f;
+                    image->at(x, y, 3) = 4.0f;
+                }
+                exact.at(x, y, 0) = static_cast<float>(u);
+                footprint.at(x, y, 0) = static_cast<float>(u + fe / mapSide);
+                hits.at(x, y, 0) = static_cast<float>(u + (fe + te) / mapSide);
+            }
+            v += step;
+        }
+        QVERIFY(std::abs(pixelArea(entry, 3, 3) - 0.001 * 0.001) < 1e-9);
+        QVERIFY(std::abs(pixelArea(entry, 3, h - 3) - 0.004 * 0.004) < 1e-9);
+        ReferenceSurfaces references;
+        references.exact = &exact;
+        references.footprintExact = &footprint;
+        references.entry = &entry;
+        const SurfaceErrors e = compareSurfaces(hits, references, mapSide, mapSide);
+        QCOMPARE(e.pixels, w * h);
+        QVERIFY(e.techniqueError.max < 0.21); // against the footprint's exact hit alone
+        QVERIFY(e.filteringError.max > 0.5 && e.filteringError.max < 1.51);
+        // The far half holds 16/17 of the area: the filtering's mean is nearly its own.
+        double farMean = 0.0;
+        int far = 0;
+        for (int y = h / 2; y < h; ++y)
+            for (int x = 0; x < w; ++x, ++far)
+                farMean += e.filtering[static_cast<std::size_t>(y) * w + x];
+        farMean /= far;
+        const double areaShare = 16.0 / 17.0; // rows near the middle mix, a little
+        QVERIFY2(std::abs(e.filteringError.mean - areaShare * farMean) < 0.03 * farMean,
+                 qPrintable(QString("%1 vs %2").arg(e.filteringError.mean).arg(farMean)));
+        // Counted by pixel it would be half: the test tells the two apart.
+        QVERIFY(e.filteringError.mean > 0.75 * farMean);
+        QVERIFY(e.area > 0.0);
+        // Without the footprint's render the technique's error is against level 0.
+        const SurfaceErrors total = compareSurfaces(hits, exact, mapSide, mapSide);
+        QVERIFY(total.techniqueError.max > 0.5);
+        QCOMPARE(total.filteringError.max, 0.0);
     }
 
     // Seen at a grazing angle, neighbouring pixels lie far apart in uv: the surface between them

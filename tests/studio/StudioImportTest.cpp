@@ -14,12 +14,14 @@
 #include "panels/MaterialPanel.h"
 #include "parallax/io/AtomicWrite.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QTimer>
 
 using namespace px;
 using namespace px::studio;
@@ -205,6 +207,61 @@ private slots:
         QVERIFY(w->importSummary());
         QVERIFY(w->importSummary()->decision().contains("derived from the normal map"));
         QVERIFY(!w->importSummary()->flipButton()->isEnabled());
+    }
+
+    // A height map derived from a normal map exists nowhere but here: the window says it is
+    // unsaved, and importing another set asks first (Cancel keeps it, Discard replaces it).
+    void anUnsavedDerivedHeightIsNotReplacedWithoutAsking() {
+        auto w = makeWindow(1, 64, true);
+        QVERIFY(w);
+        QTemporaryDir normalOnly, full;
+        TextureSetSpec spec;
+        spec.stem = "stone01";
+        spec.seed = 3;
+        const auto written = writeTextureSet(normalOnly.path().toStdString(), spec);
+        QVERIFY(QFile::remove(QString::fromStdString(written.heightFile)));
+        TextureSetSpec wall;
+        wall.stem = "wall";
+        writeTextureSet(full.path().toStdString(), wall);
+
+        QVERIFY(!w->importFolder(normalOnly.path()));
+        auto* box = w->findChild<QMessageBox*>("derive-height");
+        QVERIFY(box);
+        QVERIFY(QTest::qWaitForWindowExposed(box));
+        QTest::keyClick(box, Qt::Key_Return); // make the height map
+        QCOMPARE(QString::fromStdString(w->document()->material().name), QString("stone01"));
+        QVERIFY(w->document()->isDirty());
+        QVERIFY(w->isWindowModified());
+
+        QString asked;
+        auto answer = [&asked](QMessageBox::StandardButton button) {
+            auto* timer = new QTimer;
+            timer->setInterval(20);
+            QObject::connect(timer, &QTimer::timeout, [timer, button, &asked] {
+                auto* question = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+                if (!question)
+                    return;
+                asked = question->text();
+                timer->stop();
+                timer->deleteLater();
+                question->button(button)->click();
+            });
+            timer->start();
+        };
+        answer(QMessageBox::Cancel);
+        QVERIFY(!w->importFolder(full.path()));
+        QVERIFY2(asked.contains("not saved"), qPrintable(asked));
+        QCOMPARE(QString::fromStdString(w->document()->material().name), QString("stone01"));
+        QVERIFY(w->document()->state().isUnsaved(MapKind::Height));
+
+        asked.clear();
+        answer(QMessageBox::Discard);
+        QVERIFY(w->importFolder(full.path()));
+        QVERIFY(!asked.isEmpty());
+        QCOMPARE(QString::fromStdString(w->document()->material().name), QString("wall"));
+        QVERIFY(!w->document()->isDirty()); // read from files: nothing to lose
+        if (w->importSummary())
+            w->importSummary()->close();
     }
 
     void anUnrecognisedFolderIsRefusedWithTheReport() {

@@ -331,6 +331,70 @@ private slots:
         QCOMPARE(w.document()->material().heightScale, 0.03f);
     }
 
+    // The light the material was seen under is written into its file and comes back with it;
+    // a file without one leaves the light as it is.
+    void theLightIsSavedWithTheMaterial() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Stones, 16);
+        SharedView view = w.viewports()->activeView();
+        view.light.azimuthDeg = -63.0f;
+        view.light.elevationDeg = 22.5f;
+        w.viewports()->editView(view);
+        const QString file = m_dir.filePath("lit.json");
+        QVERIFY(w.saveTo(file));
+        Result<Material> saved = loadMaterial(file.toStdString());
+        QVERIFY(saved);
+        QVERIFY(saved->light == (LightDirection{-63.0f, 22.5f}));
+        QVERIFY(!w.document()->isDirty()); // what was saved is the clean state
+
+        view = w.viewports()->activeView();
+        view.light.azimuthDeg = 100.0f;
+        view.light.elevationDeg = 70.0f;
+        w.viewports()->editView(view);
+        QVERIFY(w.openFile(file));
+        QCOMPARE(w.viewports()->activeView().light.azimuthDeg, -63.0f);
+        QCOMPARE(w.viewports()->activeView().light.elevationDeg, 22.5f);
+
+        // Without a light in the file the view keeps its own.
+        Material unlit = *saved;
+        unlit.light.reset();
+        const QString plain = m_dir.filePath("unlit.json");
+        QVERIFY(saveMaterial(unlit, plain.toStdString()).ok());
+        QVERIFY(!QString::fromStdString(materialToJson(unlit)).contains("\"light\""));
+        QVERIFY(w.openFile(plain));
+        QCOMPARE(w.viewports()->activeView().light.azimuthDeg, -63.0f);
+    }
+
+    // File > New Empty Material: no maps, nothing to trace yet; a height map loaded next makes it
+    // a material like any other.
+    void newEmptyMaterialHasNoMaps() {
+        MainWindow w(probeOpenGl().reason);
+        w.setInteractive(false);
+        w.newSample(ProceduralMap::Bricks, 16);
+        QAction* empty = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->text() == "New &Empty Material")
+                empty = a;
+        QVERIFY(empty);
+        QCOMPARE(empty->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
+        empty->trigger();
+        const DocumentState& s = w.document()->state();
+        for (MapKind kind : kAllMapKinds)
+            QVERIFY2(!s.hasMap(kind), mapTitle(kind).data());
+        QVERIFY(!s.anyUnsaved());
+        QVERIFY(w.document()->filePath().isEmpty());
+        QVERIFY(!w.document()->isDirty());
+        QCOMPARE(w.document()->undoStack()->count(), 0);
+        QVERIFY(!s.canTrace(Technique::Pom));
+        // A height map next: a material to trace.
+        HeightField h(16, 16, 0.5f);
+        const QString height = m_dir.filePath("flat_height.png");
+        QVERIFY(writeImage(height.toStdString(), h.toImage(), {}).ok());
+        QVERIFY(w.loadMap(MapKind::Height, height));
+        QVERIFY(w.document()->state().canTrace(Technique::Pom));
+    }
+
     void bakeOfAnOldSurfaceIsDiscarded() {
         DocumentState state = makeSampleState(ProceduralMap::Bricks, 16);
         BakeOutcome outcome;

@@ -26,10 +26,12 @@
 #include "widgets/SliderField.h"
 #include "widgets/TechniqueCombo.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QElapsedTimer>
 #include <QLabel>
+#include <QMenu>
 #include <QMessageBox>
 #include <QOpenGLContext>
 #include <QPainter>
@@ -40,6 +42,7 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolButton>
 #include <array>
 
@@ -304,6 +307,30 @@ private slots:
             QCOMPARE(viewport->minimumSizeHint().width(), narrowest);
             figures->setText(text);
         }
+    }
+
+    // A view never waits on input to finish a frame: with the steps it had lined up lost
+    // mid-frame (its timers stopped, as a paint request the platform dropped left a view on its
+    // stand-in, "measuring the error…", for 55 s until the mouse moved), the frame and its figures
+    // still complete, with no input event and nothing asking it to paint.
+    void aFrameCompletesWithNoInput() {
+        auto w = makeWindow(1, 256);
+        QVERIFY(w);
+        PreviewWidget* preview = w->viewports()->viewport(0)->preview();
+        QVERIFY(waitForFigures(preview));
+        FramePacer::setBudgetMs(1.0); // a frame over many turns
+        const auto restore = qScopeGuard([] { FramePacer::setBudgetMs(30.0); });
+        const int frames = preview->framesRendered();
+        w->document()->edit("deeper", [](DocumentState& s) { s.material.heightScale = 0.11f; });
+        QTRY_VERIFY_WITH_TIMEOUT(!preview->frameComplete(), 30000); // the frame is under way
+        for (QTimer* timer : preview->findChildren<QTimer*>())
+            timer->stop();
+        QVERIFY(!preview->stats().valid);
+        QVERIFY2(QTest::qWaitFor(
+                     [&] { return preview->framesRendered() > frames && preview->stats().valid; },
+                     60000),
+                 "the frame stopped where its next step was lost");
+        QVERIFY(preview->frameComplete());
     }
 
     void figuresAreMeasuredInSlices() {
@@ -640,11 +667,21 @@ private slots:
         QVERIFY(!combo->isAvailable(Technique::Cone));
     }
 
-    // Cone bakes go to the GPU (a context sharing the viewports', on the bake's worker) and give
+    // Cone bakes chosen on the GPU (a context sharing the viewports', on the bake's worker) give
     // the CPU's map; the view keeps drawing while they run (dispatches of a few milliseconds).
     void coneBakesRunOnTheGpuWhileTheViewDraws() {
         auto w = makeWindow(1, 512);
         QVERIFY(w);
+        // llvmpipe: a software rasteriser, which Automatic leaves alone; the artist's choice.
+        QAction* gpu = nullptr;
+        for (QAction* a : w->findChild<QMenu*>("bake-device")->actions())
+            if (a->data().toInt() == static_cast<int>(BakeDevicePreference::Gpu))
+                gpu = a;
+        QVERIFY(gpu);
+        gpu->trigger();
+        QCOMPARE(w->baker()->devicePreference(), BakeDevicePreference::Gpu);
+        const auto automatic =
+            qScopeGuard([] { saveBakeDevicePreference(BakeDevicePreference::Automatic); });
         PreviewWidget* preview = w->viewports()->viewport(0)->preview();
         QVERIFY(waitForFigures(preview));
         std::vector<BakeOutcome> finished;
@@ -680,9 +717,44 @@ private slots:
         const QRegularExpression line("on the GPU \\(.+\\), shown [0-9.]+ s after Bake");
         QTRY_VERIFY_WITH_TIMEOUT((preview->update(), said.contains(line)), 60000);
         // The panel's line says so too, naming the renderer.
-        QVERIFY2(
-            w->mapsPanel()->bakeStatus().contains(" s on the GPU (" + outcome.gpu + "), shown "),
-            qPrintable(w->mapsPanel()->bakeStatus()));
+        QVERIFY2(w->mapsPanel()->bakeStatus().contains(" s on the GPU (" + outcome.gpu +
+                                                       ", as chosen in Bake ▸ Device), shown "),
+                 qPrintable(w->mapsPanel()->bakeStatus()));
+    }
+
+    // Left to itself the editor bakes cones on the faster device: under llvmpipe (a software
+    // rasteriser) the CPU, and the line says why; a window opened later keeps the choice made.
+    void coneBakesRunOnTheCpuUnderASoftwareRasteriser() {
+        saveBakeDevicePreference(BakeDevicePreference::Automatic);
+        auto w = makeWindow(1, 128);
+        QVERIFY(w);
+        QCOMPARE(w->baker()->devicePreference(), BakeDevicePreference::Automatic);
+        QVERIFY2(probeOpenGl().software(), qPrintable(probeOpenGl().renderer)); // Xvfb: llvmpipe
+        std::vector<BakeOutcome> finished;
+        connect(w->baker(), &BakeRunner::finished, this,
+                [&finished](const BakeOutcome& o) { finished.push_back(o); });
+        w->startBake(BakeKind::Cone);
+        QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 120000);
+        QCOMPARE(finished.size(), std::size_t(1));
+        const BakeOutcome& outcome = finished.front();
+        QVERIFY2(outcome.error.isEmpty(), qPrintable(outcome.error));
+        QVERIFY2(outcome.gpu.isEmpty(), qPrintable(outcome.gpu));
+        QVERIFY(!outcome.request.device.gpu);
+        const QString expected =
+            QString(" s on the CPU (the GPU, %1, is a software rasteriser: the CPU bakes faster)")
+                .arg(probeOpenGl().renderer);
+        QTRY_VERIFY_WITH_TIMEOUT((w->viewports()->viewport(0)->preview()->update(),
+                                  w->mapsPanel()->bakeStatus().contains(expected)),
+                                 60000);
+        // The CPU chosen in the menu is kept for the next window.
+        for (QAction* a : w->findChild<QMenu*>("bake-device")->actions())
+            if (a->data().toInt() == static_cast<int>(BakeDevicePreference::Cpu))
+                a->trigger();
+        QCOMPARE(savedBakeDevicePreference(), BakeDevicePreference::Cpu);
+        auto again = makeWindow(1, 32);
+        QVERIFY(again);
+        QCOMPARE(again->baker()->devicePreference(), BakeDevicePreference::Cpu);
+        saveBakeDevicePreference(BakeDevicePreference::Automatic);
     }
 
     void cancelledBakeChangesNothing() {

@@ -49,7 +49,7 @@ VariantKey Renderer::variantFor(const GpuMaterial& gpu, const Material& m,
     k.wrap = gpu.wrap();
     k.lighting = m.lighting;
     k.tbn = o.tbn;
-    k.output = o.output == ShaderOutput::Surface ? ShaderOutput::Surface : ShaderOutput::Color;
+    k.output = o.output == ShaderOutput::Trace ? ShaderOutput::Color : o.output;
     k.flavour = o.kernels;
     k.environment = o.environment != nullptr;
     return canonical(k);
@@ -97,7 +97,7 @@ Status Renderer::draw(GpuMaterial& gpu, const Material& m, const OrbitCamera& ca
 
     glViewport(0, 0, size.x, size.y);
     if (o.clear) {
-        const glm::vec4 c = key.output == ShaderOutput::Surface ? glm::vec4(-1.0f) : o.background;
+        const glm::vec4 c = key.output != ShaderOutput::Color ? glm::vec4(-1.0f) : o.background;
         glClearColor(c.r, c.g, c.b, c.a);
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -150,7 +150,7 @@ Result<Image> Renderer::renderImage(GpuMaterial& gpu, const Material& m, const O
                                     const DirectionalLight& light, const DrawOptions& o,
                                     glm::ivec2 size) {
     Result<RenderTarget> target = RenderTarget::create(
-        size, o.output == ShaderOutput::Surface ? TargetFormat::Rgba32F : TargetFormat::Rgba8);
+        size, o.output != ShaderOutput::Color ? TargetFormat::Rgba32F : TargetFormat::Rgba8);
     if (!target)
         return target.error();
     target->bind();

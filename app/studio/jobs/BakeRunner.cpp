@@ -5,6 +5,7 @@
 #include "jobs/SharedGlContext.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/ConeMapFinish.h"
+#include "preview/GlSupport.h"
 
 #include <QMetaObject>
 #include <QOffscreenSurface>
@@ -29,8 +30,10 @@ QString bakeTitle(BakeKind kind) {
 }
 
 QString bakeDevice(const BakeOutcome& outcome) {
-    return outcome.gpu.isEmpty() ? QObject::tr("on the CPU")
-                                 : QObject::tr("on the GPU (%1)").arg(outcome.gpu);
+    const QString where =
+        outcome.gpu.isEmpty() ? QObject::tr("on the CPU") : QObject::tr("on the GPU");
+    return outcome.deviceWhy.isEmpty() ? where
+                                       : QObject::tr("%1 (%2)").arg(where, outcome.deviceWhy);
 }
 
 namespace {
@@ -54,11 +57,18 @@ BakeOutcome runBake(const BakeRequest& request, const BakeControl& control,
     } else {
         const ConeKind kind =
             request.kind == BakeKind::Cone ? ConeKind::Conservative : ConeKind::Relaxed;
-        QString gpu;
-        Result<ConeMap> cone = bakeConeOnGpu(field, request.wrap, kind, control, surface, &gpu);
-        if (cone)
-            outcome.gpu = gpu;
-        else if (!isCancelled(cone.error())) // no GPU context here: the same map on the CPU
+        outcome.deviceWhy = request.device.why;
+        Result<ConeMap> cone = Error{"not baked"};
+        if (request.device.gpu) {
+            QString gpu;
+            cone = bakeConeOnGpu(field, request.wrap, kind, control, surface, &gpu);
+            if (cone)
+                outcome.gpu = gpu;
+            else if (!isCancelled(cone.error())) // no GPU context after all: the same map here
+                outcome.deviceWhy = QObject::tr("the GPU failed: %1")
+                                        .arg(QString::fromStdString(cone.error().message));
+        }
+        if (!request.device.gpu || (!cone && !isCancelled(cone.error())))
             cone = bakeConeMap(field, request.wrap, kind, control);
         if (cone) {
             // 16 bits, a 16-bit file's precision (never wider): with a 16-bit height the GPU
@@ -139,14 +149,18 @@ void BakeRunner::next() {
             },
             Qt::QueuedConnection);
     };
-    const BakeRequest request = *m_runningRequest;
+    BakeRequest request = *m_runningRequest;
     // The cancel flag lives as long as the job: the job holds its own reference.
     std::shared_ptr<std::atomic<bool>> flag = m_cancel;
-    // Cone bakes go to the GPU where the viewports share their context (a surface for the
-    // worker's is made here, on the GUI thread, as Qt requires).
+    // Cone bakes go where BakeDevice.h says; on the GPU in a context sharing the viewports' (a
+    // surface for the worker's is made here, on the GUI thread, as Qt requires).
     std::shared_ptr<QOffscreenSurface> surface;
-    if (kind != BakeKind::Normal && QOpenGLContext::globalShareContext())
-        surface = workerSurface();
+    if (kind != BakeKind::Normal) {
+        const bool shared = QOpenGLContext::globalShareContext() != nullptr;
+        request.device = chooseBakeDevice(m_preference, probeOpenGl().renderer, shared);
+        if (request.device.gpu)
+            surface = workerSurface();
+    }
     BackgroundArena* arena = m_arena.get(); // outlives the job: ~BakeRunner waits for it
     m_watcher.setFuture(QtConcurrent::run(&m_pool, [request, control, flag, arena, surface] {
         BakeOutcome outcome;

@@ -1,10 +1,12 @@
 #pragma once
 // Runs the bakers (normal, cone, relaxed cone) on a worker thread, one at a time in the order
-// asked, with progress and cancellation: the UI never waits for a bake. Cone bakes run on the GPU
-// where a context can share the viewports' (GpuConeBake.h), on the CPU otherwise. The result comes
-// back on the GUI thread together with the maps it was baked from, so the caller can tell whether
-// the height map changed meanwhile.
+// asked, with progress and cancellation: the UI never waits for a bake. Cone bakes run on the
+// device BakeDevice.h chooses: the GPU (GpuConeBake.h) where it is a GPU and a context can share
+// the viewports', the CPU where the renderer is a software rasteriser, or the artist's choice. The
+// result comes back on the GUI thread together with the maps it was baked from, so the caller can
+// tell whether the height map changed meanwhile.
 
+#include "jobs/BakeDevice.h"
 #include "parallax/bake/ConeMap.h"
 #include "parallax/bake/NormalMapBaker.h"
 #include "parallax/material/MaterialAssets.h"
@@ -32,6 +34,7 @@ struct BakeRequest {
     std::shared_ptr<const MaterialAssets> source; // its height map is baked
     WrapMode wrap = WrapMode::Repeat;
     NormalBakeOptions normal; // for BakeKind::Normal
+    BakeDeviceChoice device;  // cone bakes: where, and why (BakeRunner::start decides)
 };
 
 struct BakeOutcome {
@@ -43,9 +46,12 @@ struct BakeOutcome {
     double seconds = 0.0; // the bake itself, on its thread
     int threadNice = 0;   // the bake's thread's nice value while it baked (BackgroundPriority.h)
     QString gpu;          // cone bakes: the GL renderer that baked them, empty if the CPU did
+    QString deviceWhy;    // cone bakes: why there (BakeDeviceChoice::why, or the GPU's failure)
 };
 
-// Where a bake ran, as its status line says it: "on the CPU", "on the GPU (llvmpipe ...)".
+// Where a bake ran and why, as its status line says it: "on the CPU (the GPU, llvmpipe ..., is a
+// software rasteriser: the CPU bakes faster)", "on the GPU (NVIDIA ...: a GPU bakes faster than
+// the CPU)"; a normal map's "on the CPU".
 QString bakeDevice(const BakeOutcome& outcome);
 
 class BakeRunner : public QObject {
@@ -55,7 +61,10 @@ public:
     ~BakeRunner() override; // cancels and waits: no worker outlives the runner
 
     void start(const BakeRequest& request); // queued behind a running bake
-    void cancel();                          // the running bake and every queued one
+    // Where cone bakes started from now on run (the settings' choice at first).
+    void setDevicePreference(BakeDevicePreference preference) { m_preference = preference; }
+    BakeDevicePreference devicePreference() const { return m_preference; }
+    void cancel(); // the running bake and every queued one
     bool isBusy() const { return m_running || !m_queue.empty(); }
     // The bake running now, if any.
     std::optional<BakeKind> current() const;
@@ -72,6 +81,7 @@ private:
     void next();
     void done();
 
+    BakeDevicePreference m_preference = savedBakeDevicePreference();
     std::deque<BakeRequest> m_queue;
     std::optional<BakeRequest> m_runningRequest;
     bool m_running = false;

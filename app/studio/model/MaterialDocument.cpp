@@ -41,13 +41,13 @@ void MaterialDocument::edit(const QString& text, const std::function<void(Docume
         new StateCommand(this, text, m_state, std::move(next), mergeKey, m_mergeGeneration));
 }
 
-void MaterialDocument::reset(DocumentState state, const QString& filePath) {
+void MaterialDocument::reset(DocumentState state, const QString& filePath, bool unsavedWork) {
     m_undo.clear();
     m_mergeGeneration = 0;
     m_filePath = filePath;
     m_state = std::move(state);
     m_cleanJson = materialToJson(m_state.material);
-    m_cleanAssets = m_state.assets;
+    m_cleanAssets = unsavedWork ? nullptr : m_state.assets; // no clean state to come back to
     notify(MaterialChanged | MapsChanged | ViewsChanged | FileChanged);
 }
 

@@ -44,8 +44,10 @@ public:
               const QString& mergeKey = {});
     void endMerge() { ++m_mergeGeneration; }
 
-    // Replaces the whole document (new, open): the undo history starts afresh.
-    void reset(DocumentState state, const QString& filePath);
+    // Replaces the whole document (new, open): the undo history starts afresh. `unsavedWork`:
+    // the state holds work that is on no disk and not made again by opening it (a height map
+    // derived from a normal map): dirty until saved, so replacing it asks first.
+    void reset(DocumentState state, const QString& filePath, bool unsavedWork = false);
     // After a save: the state as saved (maps now on disk) becomes the clean state; the undo
     // history is kept.
     void markSaved(DocumentState saved, const QString& filePath);

@@ -11,9 +11,12 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScreen>
+#include <QScrollArea>
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
 
 namespace px::studio {
 
@@ -53,8 +56,19 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
     m_force->setToolTip(tr("Only a folder that is empty or that an export wrote is replaced, "
                            "never a folder of other files."));
     m_result = new QLabel(this);
+    m_result->setObjectName(QStringLiteral("export-result"));
     m_result->setWordWrap(true);
+    m_result->setTextFormat(Qt::PlainText);
+    m_result->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     m_result->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_result->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    // The result's lines (files, then notes such as "self-shadowing is not exported") scroll
+    // when the dialog cannot grow to hold them all; it grows first (showResult).
+    m_resultArea = new QScrollArea(this);
+    m_resultArea->setWidget(m_result);
+    m_resultArea->setWidgetResizable(true);
+    m_resultArea->setFrameShape(QFrame::NoFrame);
+    m_resultArea->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
 
     auto* form = new QFormLayout;
     form->addRow(tr("Format"), m_format);
@@ -67,7 +81,7 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
     m_export = buttons->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
-    layout->addWidget(m_result);
+    layout->addWidget(m_resultArea, 1);
     layout->addWidget(buttons);
 
     connect(browse, &QToolButton::clicked, this, [this] {
@@ -92,7 +106,7 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
             message.replace(QStringLiteral("use --force to replace it"),
                             tr("tick \"%1\" to replace it").arg(m_force->text()));
             message.replace(QStringLiteral("even with --force"), tr("even when asked to"));
-            m_result->setText(message);
+            showResult(message);
             emit exportFinished(false);
             return;
         }
@@ -110,7 +124,7 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
                         static_cast<int>(kept.size()))
                          .arg(kept.join(QStringLiteral(", ")));
         }
-        m_result->setText(lines.join(QLatin1Char('\n')));
+        showResult(lines.join(QLatin1Char('\n')));
         emit exportFinished(true);
     });
 }
@@ -127,6 +141,25 @@ ExportOptions ExportDialog::options() const {
     return o;
 }
 
+void ExportDialog::showResult(const QString& text) {
+    m_result->setText(text);
+    // Grow to hold the whole result, as far as the screen allows; the rest scrolls.
+    const int width = m_resultArea->viewport()->width();
+    const int wanted = m_result->heightForWidth(width) - m_resultArea->viewport()->height();
+    if (wanted <= 0 || !isVisible())
+        return;
+    const QRect room = screen() ? screen()->availableGeometry() : QRect();
+    const int frame = frameGeometry().height() - height();
+    const int most = room.isValid() ? room.height() - frame : height() + wanted;
+    const int grown = std::min(height() + wanted, most);
+    if (grown <= height())
+        return;
+    resize(this->width(), grown);
+    // Kept on the screen: its top moves up where its bottom would leave it.
+    if (room.isValid() && frameGeometry().bottom() > room.bottom())
+        move(x(), std::max(room.top(), y() - (frameGeometry().bottom() - room.bottom())));
+}
+
 QString ExportDialog::resultText() const {
     return m_result->text();
 }
@@ -135,7 +168,7 @@ void ExportDialog::startExport() {
     if (m_watcher.isRunning())
         return;
     m_export->setEnabled(false);
-    m_result->setText(tr("Exporting…"));
+    showResult(tr("Exporting…"));
     const Material material = m_material;
     const std::string file = m_materialFile.toStdString();
     const ExportOptions opts = options();

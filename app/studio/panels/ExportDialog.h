@@ -13,6 +13,7 @@ class QComboBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
+class QScrollArea;
 
 namespace px::studio {
 
@@ -25,6 +26,8 @@ public:
     ExportOptions options() const;
     void startExport();
     QString resultText() const;
+    // The result's scroll area: every note is in it, in view or a scroll away (tests).
+    QScrollArea* resultArea() const { return m_resultArea; }
     bool isRunning() const { return m_watcher.isRunning(); }
 
 signals:
@@ -39,7 +42,10 @@ private:
     QComboBox* m_normal;
     QComboBox* m_green;
     QCheckBox* m_force;
+    void showResult(const QString& text);
+
     QLabel* m_result;
+    QScrollArea* m_resultArea;
     QPushButton* m_export;
     QFutureWatcher<Result<ExportResult>> m_watcher;
 };

@@ -10,10 +10,12 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMimeData>
+#include <QResizeEvent>
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <QWindow>
 #include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
 #include <functional>
 
 namespace px::studio {
@@ -101,10 +103,19 @@ MapRow::MapRow(MapKind kind, bool bakeable, QWidget* parent) : QWidget(parent), 
     text->addWidget(m_title);
     text->addWidget(m_source);
     text->addWidget(m_warning);
-    auto* layout = new QHBoxLayout(this);
-    layout->setContentsMargins(2, 2, 2, 2);
-    layout->addWidget(m_thumbnail);
-    layout->addLayout(text, 1);
+    auto* top = new QHBoxLayout;
+    top->setContentsMargins(0, 0, 0, 0);
+    top->addWidget(m_thumbnail);
+    top->addLayout(text, 1);
+    m_buttons = new QWidget(this);
+    auto* buttons = new QHBoxLayout(m_buttons);
+    buttons->setContentsMargins(0, 0, 0, 0);
+    buttons->addStretch();
+    m_arrangement = new QBoxLayout(QBoxLayout::LeftToRight, this);
+    m_arrangement->setContentsMargins(2, 2, 2, 2);
+    m_arrangement->addLayout(top, 1);
+    m_arrangement->addWidget(m_buttons);
+    QBoxLayout* layout = buttons;
     if (bakeable) {
         m_bake = new QToolButton(this);
         m_bake->setText(tr("Bake"));
@@ -122,6 +133,30 @@ MapRow::MapRow(MapKind kind, bool bakeable, QWidget* parent) : QWidget(parent), 
     layout->addWidget(m_clear);
     connect(m_load, &QToolButton::clicked, this, [this] { emit loadRequested(m_kind); });
     connect(m_clear, &QToolButton::clicked, this, [this] { emit clearRequested(m_kind); });
+}
+
+void MapRow::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    arrange(event->size().width());
+}
+
+QSize MapRow::minimumSizeHint() const {
+    // The buttons under the text: the panel may be as narrow as that (arrange() moves them).
+    const QSize beside = QWidget::minimumSizeHint();
+    const QMargins m = m_arrangement->contentsMargins();
+    const int under = std::max(m_thumbnail->width() + 2 * m_arrangement->spacing(),
+                               m_buttons->minimumSizeHint().width()) +
+                      m.left() + m.right();
+    return {std::min(beside.width(), under), beside.height()};
+}
+
+void MapRow::arrange(int width) {
+    // Beside the text where the title and the buttons both fit, else under it.
+    const int wide = m_thumbnail->width() + m_title->sizeHint().width() +
+                     m_buttons->sizeHint().width() + 3 * m_arrangement->spacing() + 8;
+    const auto direction = width >= wide ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom;
+    if (m_arrangement->direction() != direction)
+        m_arrangement->setDirection(direction);
 }
 
 QString MapRow::sourceText() const {

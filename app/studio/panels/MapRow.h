@@ -9,6 +9,7 @@
 #include <memory>
 
 class QImage;
+class QBoxLayout;
 class QLabel;
 class QToolButton;
 
@@ -43,8 +44,18 @@ signals:
 protected:
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
+public:
+    QSize minimumSizeHint() const override;
+
+protected:
 private:
+    // The buttons beside the text where the row is wide enough, under it where not: the row's
+    // width is the panel's (its own needs never widen the panel past its dock).
+    void arrange(int width);
+    QBoxLayout* m_arrangement = nullptr;
+    QWidget* m_buttons = nullptr;
     void showThumbnail(const QImage& thumbnail, double ratio);
     MapKind m_kind;
     QLabel* m_thumbnail;

@@ -36,17 +36,29 @@ MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* par
     }
 
     auto* bake = new QGroupBox(tr("Baking"), this);
+    // As wide as the panel, whatever its fields would like: the rows set the panel's width.
+    bake->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     auto* bakeLayout = new QVBoxLayout(bake);
     m_filter = new QComboBox(this);
     for (std::string_view name : normalFilterNames())
         m_filter->addItem(QString::fromUtf8(name.data(), static_cast<int>(name.size())));
     m_filter->setCurrentText(QStringLiteral("sobel"));
+    // Narrow enough for the panel on a small screen (960 x 540 at scale 2).
+    m_filter->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_filter->setMinimumContentsLength(6);
     m_filter->setToolTip(tr("Derivative filter of the normal bake: central (4 taps, sharpest), "
                             "Sobel or Scharr (3x3, smoother). Each gives the same strength."));
     connect(m_filter, &QComboBox::currentIndexChanged, this, &MapsPanel::refresh);
     auto* form = new QFormLayout;
     form->addRow(tr("Normal filter"), m_filter);
     m_bakeLabel = new QLabel(tr("No bake running."), this);
+    m_bakeLabel->setObjectName(QStringLiteral("bake-status"));
+    // A long line ("Baked the relaxed cone map in 7.2 s on the CPU (the GPU, llvmpipe (LLVM 15.0.6,
+    // 256 bits), is a software rasteriser...)") wraps within the panel's width, which its length
+    // never sets: it used to widen the panel until every row's buttons scrolled out of view.
+    m_bakeLabel->setWordWrap(true);
+    m_bakeLabel->setTextFormat(Qt::PlainText);
+    m_bakeLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_progress = new QProgressBar(this);
     m_progress->setRange(0, 100);
     m_progress->setValue(0);
@@ -64,26 +76,25 @@ MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* par
 
     connect(m_cancel, &QPushButton::clicked, m_baker, &BakeRunner::cancel);
     connect(m_baker, &BakeRunner::started, this, [this](BakeKind kind) {
-        m_bakeLabel->setText(tr("Baking the %1…").arg(bakeTitle(kind)));
+        setBakeStatus(tr("Baking the %1…").arg(bakeTitle(kind)));
         m_progress->setValue(0);
         m_cancel->setEnabled(true);
         refresh();
     });
     connect(m_baker, &BakeRunner::cancelling, this, [this](BakeKind kind) {
-        m_bakeLabel->setText(tr("Cancelling the %1 bake…").arg(bakeTitle(kind)));
+        setBakeStatus(tr("Cancelling the %1 bake…").arg(bakeTitle(kind)));
         m_cancel->setEnabled(false);
     });
     connect(m_baker, &BakeRunner::progress, this,
             [this](BakeKind, double f) { m_progress->setValue(static_cast<int>(f * 100)); });
     connect(m_baker, &BakeRunner::finished, this, [this](const BakeOutcome& outcome) {
-        m_bakeLabel->setText(
-            outcome.cancelled
-                ? tr("The %1 bake was cancelled.").arg(bakeTitle(outcome.request.kind))
-            : !outcome.error.isEmpty() ? outcome.error
-                                       : tr("Baked the %1 in %2 s %3.")
-                                             .arg(bakeTitle(outcome.request.kind))
-                                             .arg(outcome.seconds, 0, 'f', 2)
-                                             .arg(bakeDevice(outcome)));
+        setBakeStatus(outcome.cancelled
+                          ? tr("The %1 bake was cancelled.").arg(bakeTitle(outcome.request.kind))
+                      : !outcome.error.isEmpty() ? outcome.error
+                                                 : tr("Baked the %1 in %2 s %3.")
+                                                       .arg(bakeTitle(outcome.request.kind))
+                                                       .arg(outcome.seconds, 0, 'f', 2)
+                                                       .arg(bakeDevice(outcome)));
         m_progress->setValue(outcome.cancelled || !outcome.error.isEmpty() ? 0 : 100);
     });
     connect(m_baker, &BakeRunner::idle, this, [this] {
@@ -98,13 +109,18 @@ QString MapsPanel::bakeStatus() const {
     return m_bakeLabel->text();
 }
 
+void MapsPanel::setBakeStatus(const QString& text) {
+    m_bakeLabel->setText(text);
+    m_bakeLabel->setToolTip(text); // whole, where a word longer than the panel is cut
+}
+
 void MapsPanel::showBakeShown(BakeKind kind, double bakeSeconds, const QString& device,
                               double shownSeconds) {
-    m_bakeLabel->setText(tr("Baked the %1 in %2 s %3, shown %4 s after Bake.")
-                             .arg(bakeTitle(kind))
-                             .arg(bakeSeconds, 0, 'f', 2)
-                             .arg(device)
-                             .arg(shownSeconds, 0, 'f', 2));
+    setBakeStatus(tr("Baked the %1 in %2 s %3, shown %4 s after Bake.")
+                      .arg(bakeTitle(kind))
+                      .arg(bakeSeconds, 0, 'f', 2)
+                      .arg(device)
+                      .arg(shownSeconds, 0, 'f', 2));
 }
 
 NormalFilter MapsPanel::normalFilter() const {

@@ -42,6 +42,7 @@ signals:
 private:
     void refresh();
     void clearMap(MapKind kind);
+    void setBakeStatus(const QString& text);
 
     MaterialDocument* m_document;
     BakeRunner* m_baker;

@@ -8,42 +8,132 @@
 
 namespace px::studio {
 
-SurfaceErrors compareSurfaces(const Image& hits, const Image& exact, int mapWidth, int mapHeight,
-                              const VisibleRegion* region) {
+namespace {
+
+bool traced(const Image& image, int x, int y) {
+    return image.at(x, y, 2) >= 0.0f;
+}
+
+double distanceTexels(const Image& a, const Image& b, int x, int y, int mapWidth, int mapHeight) {
+    const double du = (double(a.at(x, y, 0)) - b.at(x, y, 0)) * mapWidth;
+    const double dv = (double(a.at(x, y, 1)) - b.at(x, y, 1)) * mapHeight;
+    return std::hypot(du, dv);
+}
+
+bool sameSize(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height && a.channels >= 4 && b.channels >= 4;
+}
+
+ErrorFigures figuresOf(const WeightedErrorStats& s) {
+    return {s.meanError, s.p99Error, s.maxError, s.wrongSurfaceShare};
+}
+
+} // namespace
+
+double pixelArea(const Image& entry, int x, int y) {
+    if (!traced(entry, x, y))
+        return 0.0;
+    // The uv step to the neighbour nearer in uv along one axis, or none.
+    auto step = [&](int dx, int dy, double& du, double& dv) {
+        double best = -1.0;
+        for (int sign : {1, -1}) {
+            const int nx = x + sign * dx, ny = y + sign * dy;
+            if (nx < 0 || ny < 0 || nx >= entry.width || ny >= entry.height ||
+                !traced(entry, nx, ny))
+                continue;
+            const double su = sign * (double(entry.at(nx, ny, 0)) - entry.at(x, y, 0));
+            const double sv = sign * (double(entry.at(nx, ny, 1)) - entry.at(x, y, 1));
+            const double length = std::hypot(su, sv);
+            if (best < 0.0 || length < best) {
+                best = length;
+                du = su;
+                dv = sv;
+            }
+        }
+        return best >= 0.0;
+    };
+    double dudx = 0.0, dvdx = 0.0, dudy = 0.0, dvdy = 0.0;
+    if (!step(1, 0, dudx, dvdx) || !step(0, 1, dudy, dvdy))
+        return 0.0;
+    return std::abs(dudx * dvdy - dudy * dvdx);
+}
+
+SurfaceErrors compareSurfaces(const Image& hits, const ReferenceSurfaces& references, int mapWidth,
+                              int mapHeight, const VisibleRegion* region) {
     SurfaceErrors out;
     out.width = hits.width;
     out.height = hits.height;
-    out.error.assign(static_cast<std::size_t>(hits.width) * hits.height, -1.0f);
-    if (hits.width != exact.width || hits.height != exact.height || hits.channels < 4 ||
-        exact.channels < 4)
+    const std::size_t count = static_cast<std::size_t>(hits.width) * hits.height;
+    out.technique.assign(count, -1.0f);
+    out.filtering.assign(count, -1.0f);
+    const Image* exactPtr = references.exact;
+    if (!exactPtr || !sameSize(hits, *exactPtr))
         return out;
-    // The bench's statistics (HitErrorStats.h), so the readout and the bench agree on a view.
-    HitErrorAccumulator pooled;
+    const Image& exact = *exactPtr;
+    const Image* footprint = references.footprintExact;
+    if (footprint && !sameSize(hits, *footprint))
+        return out;
+    const Image* entry = references.entry;
+    if (entry && !sameSize(hits, *entry))
+        entry = nullptr;
+    // The bench's statistics, weighted by area (WeightedErrorStats.h); the fetches per pixel.
+    WeightedErrorAccumulator technique, filtering;
+    HitErrorAccumulator fetches;
+    std::vector<double> weights(count, 1.0);
+    double weightSum = 0.0;
+    int weighed = 0;
     for (int y = 0; y < hits.height; ++y) {
         for (int x = 0; x < hits.width; ++x) {
-            const float t = hits.at(x, y, 2), te = exact.at(x, y, 2);
+            const float te = exact.at(x, y, 2);
             out.steepPixels += te == kSteepSurfaceT;
-            if (!(t >= 0.0f) || !(te >= 0.0f))
+            if (!traced(hits, x, y) || !traced(exact, x, y) ||
+                (footprint && !traced(*footprint, x, y)))
                 continue;
-            if (region && !region->contains(exact.at(x, y, 0), exact.at(x, y, 1))) {
+            if (region && (!region->contains(exact.at(x, y, 0), exact.at(x, y, 1)) ||
+                           (footprint &&
+                            !region->contains(footprint->at(x, y, 0), footprint->at(x, y, 1))))) {
                 ++out.offRegionPixels;
                 continue;
             }
-            const double du = (double(hits.at(x, y, 0)) - exact.at(x, y, 0)) * mapWidth;
-            const double dv = (double(hits.at(x, y, 1)) - exact.at(x, y, 1)) * mapHeight;
-            const double e = std::hypot(du, dv);
-            out.error[static_cast<std::size_t>(y) * hits.width + x] = static_cast<float>(e);
-            pooled.addError(e, static_cast<int>(std::lround(hits.at(x, y, 3))));
+            const std::size_t i = static_cast<std::size_t>(y) * hits.width + x;
+            const Image& reference = footprint ? *footprint : exact;
+            const double e = distanceTexels(hits, reference, x, y, mapWidth, mapHeight);
+            const double f =
+                footprint ? distanceTexels(*footprint, exact, x, y, mapWidth, mapHeight) : 0.0;
+            out.technique[i] = static_cast<float>(e);
+            out.filtering[i] = static_cast<float>(f);
+            out.otherSurface += e > kWrongSurfaceTexels;
+            fetches.addError(0.0, static_cast<int>(std::lround(hits.at(x, y, 3))));
+            if (entry) {
+                weights[i] = pixelArea(*entry, x, y);
+                weightSum += weights[i];
+                weighed += weights[i] > 0.0;
+            }
+            ++out.pixels;
         }
     }
-    const HitErrorStats stats = pooled.stats();
-    out.pixels = static_cast<int>(stats.rays);
-    out.meanError = stats.meanError;
-    out.p99Error = stats.p99Error;
-    out.maxError = stats.maxError;
-    out.otherSurface = static_cast<int>(stats.wrongSurface);
-    out.meanFetches = stats.meanFetches;
+    // A pixel alone (no neighbour on the surface) covers no measurable area: where no pixel
+    // does, every pixel weighs the same.
+    const bool byArea = entry && weighed > 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (out.technique[i] < 0.0f)
+            continue;
+        const double w = byArea ? weights[i] : 1.0;
+        technique.add(out.technique[i], w);
+        filtering.add(out.filtering[i], w);
+    }
+    out.techniqueError = figuresOf(technique.stats());
+    out.filteringError = figuresOf(filtering.stats());
+    out.area = byArea ? weightSum : 0.0;
+    out.meanFetches = fetches.stats().meanFetches;
     return out;
+}
+
+SurfaceErrors compareSurfaces(const Image& hits, const Image& exact, int mapWidth, int mapHeight,
+                              const VisibleRegion* region) {
+    ReferenceSurfaces references;
+    references.exact = &exact;
+    return compareSurfaces(hits, references, mapWidth, mapHeight, region);
 }
 
 std::span<const HeatStop> heatStops() {
@@ -54,14 +144,17 @@ std::span<const HeatStop> heatStops() {
     return stops;
 }
 
-QImage heatMapImage(const SurfaceErrors& errors) {
+QImage heatMapImage(const SurfaceErrors& errors, HeatMode mode) {
     QImage image(errors.width, errors.height, QImage::Format_ARGB32);
     image.fill(Qt::transparent);
     const std::span<const HeatStop> stops = heatStops();
+    const std::vector<float>& values = errors.errors(mode);
+    if (values.size() != static_cast<std::size_t>(errors.width) * errors.height)
+        return image;
     for (int y = 0; y < errors.height; ++y) {
         auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
         for (int x = 0; x < errors.width; ++x) {
-            const float e = errors.error[static_cast<std::size_t>(y) * errors.width + x];
+            const float e = values[static_cast<std::size_t>(y) * errors.width + x];
             if (e < 0.0f)
                 continue;
             QColor c = stops.back().colour;

@@ -1,5 +1,7 @@
 #include "preview/GlSupport.h"
 
+#include "jobs/BakeDevice.h"
+
 #include <QGuiApplication>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
@@ -9,9 +11,7 @@
 namespace px::studio {
 
 bool GlProbe::software() const {
-    return renderer.contains(QLatin1String("llvmpipe")) ||
-           renderer.contains(QLatin1String("softpipe")) ||
-           renderer.contains(QLatin1String("swrast"));
+    return isSoftwareRasteriser(renderer);
 }
 
 void setUpOpenGl() {

@@ -17,7 +17,7 @@ struct GlProbe {
     int minor = 0;
     QString renderer;      // GL_RENDERER
     QString reason;        // why it is not usable, as a sentence
-    bool software() const; // llvmpipe, softpipe, swrast
+    bool software() const; // a software rasteriser (jobs/BakeDevice.h): llvmpipe, SwiftShader...
 };
 
 // Sets the default surface format the preview asks for (4.3 core, depth, sRGB-capable) and makes

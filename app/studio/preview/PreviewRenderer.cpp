@@ -103,19 +103,39 @@ std::size_t g_backgroundTexels = std::size_t(4096) * 4096;
 
 // A measurement under way, drawn a few boxes at a time into the surface target (u, v, t,
 // fetches; -1 outside the boxes): each pixel's own uv over the whole view (no tracing: what the
-// view shows, VisibleRegion.h), then the view's hits and exact's in the boxes.
+// view shows, VisibleRegion.h), then in the boxes the view's hits, exact's on the height level
+// the view's technique reads, and exact's on level 0 (ErrorStats.h).
 struct Measurement {
-    enum class Pass { Entry, View, Exact };
+    enum class Pass { Entry, View, FootprintExact, Exact };
     PreviewScene scene;
     double frameMs = 0.0;
     std::vector<QRect> boxes; // the view's and exact's passes
     std::vector<QRect> whole; // the entry pass
     std::size_t next = 0;     // the next box of the pass to draw
     Pass pass = Pass::Entry;
-    Image entry, hits;  // the first two passes' output
-    double boxMs = 0.0; // the dearest box drawn so far (a pass's last box reads it back)
+    Image entry, hits, footprint; // the first three passes' output
+    double boxMs = 0.0;           // the dearest box drawn so far (a pass's last box reads it back)
     const std::vector<QRect>& passBoxes() const { return pass == Pass::Entry ? whole : boxes; }
 };
+
+PreviewStats statsOf(const SurfaceErrors& errors) {
+    PreviewStats stats;
+    stats.fetchesPerPixel = errors.meanFetches;
+    stats.meanError = errors.techniqueError.mean;
+    stats.p99Error = errors.techniqueError.p99;
+    stats.maxError = errors.techniqueError.max;
+    stats.otherSurfaceShare = errors.techniqueError.otherSurfaceShare;
+    stats.otherSurface = errors.otherSurface;
+    stats.filteringMeanError = errors.filteringError.mean;
+    stats.filteringP99Error = errors.filteringError.p99;
+    stats.filteringMaxError = errors.filteringError.max;
+    stats.pixels = errors.pixels;
+    stats.area = errors.area;
+    stats.steepPixels = errors.steepPixels;
+    stats.offRegionPixels = errors.offRegionPixels;
+    stats.valid = true;
+    return stats;
+}
 
 } // namespace
 
@@ -267,16 +287,20 @@ struct PreviewRenderer::Impl {
         o.output = ShaderOutput::Surface;
         o.clear = true; // inside the box
         Material material = m.scene.material;
+        // Every traced pass in the verify kernels, equal to the CPU's (the bench's): the view's
+        // technique reads the footprint's level bilinearly, the surface its own error is
+        // measured on (the production kernels' trilinear filter blends in the next level).
         if (m.pass == Measurement::Pass::Entry) {
             material.technique = Technique::None; // the surface's own uv, t = 0
             material.params = info(Technique::None).defaults;
-        } else if (m.pass == Measurement::Pass::Exact) {
-            // The view's hits come from the kernels it draws with (production: hardware
-            // filtering); the reference is the exact walk in the verify flavour, equal to the
-            // CPU's.
+        } else if (m.pass == Measurement::Pass::View) {
+            o.kernels = KernelFlavour::Verify;
+        } else {
             material.technique = Technique::Exact;
             material.params = info(Technique::Exact).defaults;
             o.kernels = KernelFlavour::Verify;
+            if (m.pass == Measurement::Pass::FootprintExact)
+                o.output = ShaderOutput::FootprintSurface;
         }
         return {material, o};
     }
@@ -523,25 +547,28 @@ std::optional<Result<PreviewStats>> PreviewRenderer::measureStep(double sliceMs)
                 const int mapWidth = scene.assets->height.width,
                           mapHeight = scene.assets->height.height;
                 const VisibleRegion region(m.entry, mapWidth, mapHeight);
+                ReferenceSurfaces references;
+                references.exact = &image;
+                references.footprintExact = &m.footprint;
+                references.entry = &m.entry;
                 const SurfaceErrors errors =
-                    compareSurfaces(m.hits, image, mapWidth, mapHeight, &region);
-                stats.fetchesPerPixel = errors.meanFetches;
-                stats.meanError = errors.meanError;
-                stats.p99Error = errors.p99Error;
-                stats.maxError = errors.maxError;
-                stats.otherSurface = errors.otherSurface;
-                stats.pixels = errors.pixels;
-                stats.steepPixels = errors.steepPixels;
-                stats.offRegionPixels = errors.offRegionPixels;
-                stats.valid = true;
-                m_heatMap = scene.overlays.heatMap ? heatMapImage(errors) : QImage();
+                    compareSurfaces(m.hits, references, mapWidth, mapHeight, &region);
+                stats = statsOf(errors);
+                stats.frameMs = m.frameMs;
+                m_heatMap = scene.overlays.heatMap ? heatMapImage(errors, scene.overlays.heatMode)
+                                                   : QImage();
+                if (m_keepSurfaces)
+                    m_surfaces = {m.entry, m.hits, m.footprint, std::move(image)};
                 return done(stats);
             }
             if (m.pass == Measurement::Pass::Entry) {
                 m.entry = std::move(image);
                 m.pass = Measurement::Pass::View;
-            } else {
+            } else if (m.pass == Measurement::Pass::View) {
                 m.hits = std::move(image);
+                m.pass = Measurement::Pass::FootprintExact;
+            } else {
+                m.footprint = std::move(image);
                 m.pass = Measurement::Pass::Exact;
             }
             m.next = 0;

@@ -5,6 +5,7 @@
 // Every call needs the preview's GL context current.
 
 #include "parallax/Result.h"
+#include "parallax/image/Image.h"
 #include "preview/FramePacer.h"
 #include "preview/PreviewScene.h"
 
@@ -35,12 +36,14 @@ public:
     // `serial` changes whenever the scene or the size does; a `budgetMs` of 0 draws nothing.
     Result<FramePacer::Step> drawStep(const PreviewScene& scene, std::uint64_t serial, QSize pixels,
                                       unsigned fbo, double budgetMs);
-    // Fetches per pixel and the error against `exact`, rendered at the view's own resolution (the
-    // marching techniques' height level follows each pixel's footprint): over every pixel when
-    // the heat map is on (and makes it), else over a stratified sample of boxes of the view; a
-    // pixel counts where exact's hit lies on the surface the view shows (VisibleRegion.h). Two
-    // extra passes, at 8192² 0.2-0.4 s on llvmpipe, and a cheap one of the surface's own uv over
-    // the whole view (no tracing): drawn a slice at a time, so the event loop runs between.
+    // Fetches per pixel, the technique's error and the filtering's (ErrorStats.h), rendered at
+    // the view's own resolution (the marching techniques' height level follows each pixel's
+    // footprint): over every pixel when the heat map is on (and makes it), else over a
+    // stratified sample of boxes of the view; a pixel counts where the exact hits lie on the
+    // surface the view shows (VisibleRegion.h). Three extra passes (the technique's hits in the
+    // verify kernels, exact on the footprint's level and on level 0; at 8192² 0.3-0.6 s on
+    // llvmpipe) and a cheap one of the surface's own uv over the whole view (no tracing): drawn
+    // a slice at a time, so the event loop runs between.
     // beginMeasure() starts over; each measureStep() draws at least one box, and no box it
     // expects to take it past `sliceMs` (measureBoxMs: the dearest box so far), and returns the
     // figures once every pass is done (not valid while the maps upload), else nothing yet.
@@ -53,6 +56,13 @@ public:
     // (FramePacer::inputRecently), as a frame's does.
     bool measureWaitsForInput() const;
     QImage heatMap() const { return m_heatMap; }
+    // The last measurement's renders (entry uv, the technique's hits, exact on the footprint's
+    // level, exact on level 0), kept once asked for: tests trace the same rays on the CPU.
+    struct Surfaces {
+        Image entry, hits, footprintExact, exact;
+    };
+    void keepSurfaces(bool keep) { m_keepSurfaces = keep; }
+    const Surfaces& surfaces() const { return m_surfaces; }
     std::optional<float> uniformValue(const std::string& name);
     // The maps this view last drew with (views showing the same maps share one), for tests.
     const GpuMaterial* gpuMaterial() const;
@@ -74,6 +84,8 @@ private:
     struct Impl;
     std::unique_ptr<Impl> m_impl;
     QImage m_heatMap;
+    bool m_keepSurfaces = false;
+    Surfaces m_surfaces;
     FramePacer m_pacer;
 };
 

@@ -15,6 +15,7 @@
 #include <QPainter>
 #include <QPointer>
 #include <QTimer>
+#include <QTimerEvent>
 #include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
@@ -115,6 +116,47 @@ void PreviewWidget::setScene(const PreviewScene& scene) {
     m_stats.valid = false;
     m_measureTimer->start();
     update();
+    watch();
+}
+
+namespace {
+// How often an unfinished frame or measurement is looked at: a step is due every turn (tens of
+// ms), so a quarter second without one means none is coming.
+constexpr int kWatchMs = 250;
+} // namespace
+
+void PreviewWidget::watch() {
+    if (!m_watchdog.isActive())
+        m_watchdog.start(kWatchMs, this);
+}
+
+void PreviewWidget::timerEvent(QTimerEvent* event) {
+    if (event->timerId() != m_watchdog.timerId()) {
+        QOpenGLWidget::timerEvent(event);
+        return;
+    }
+    const bool painted = m_paintsSinceWatch > 0;
+    m_paintsSinceWatch = 0;
+    if (!m_renderer || !isVisible()) {
+        m_watchdog.stop(); // a view shown again paints, and watches again
+        return;
+    }
+    if (!m_frameComplete || m_renderer->uploading()) {
+        if (!painted)
+            update(); // the frame's next step was asked for and never came
+        return;
+    }
+    if (m_measured) {
+        m_watchdog.stop(); // the frame and its figures are done
+        return;
+    }
+    // The figures: their next slice, or their start, where none is on its way.
+    if (m_renderer->measuring()) {
+        if (!m_sliceTimer->isActive())
+            measureSlice();
+    } else if (!m_measureTimer->isActive()) {
+        measure();
+    }
 }
 
 void PreviewWidget::dropMeasurement() {
@@ -236,6 +278,8 @@ void PreviewWidget::resizeGL(int, int) {
 }
 
 void PreviewWidget::paintGL() {
+    ++m_paintsSinceWatch;
+    watch();
     const QSize pixels = size() * devicePixelRatioF();
     // The renderer's raw GL between begin/endNativePainting, as Qt asks of mixed painting.
     QPainter painter(this);

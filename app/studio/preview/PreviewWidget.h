@@ -9,6 +9,7 @@
 #include "preview/HeatLegend.h"
 #include "preview/PreviewScene.h"
 
+#include <QBasicTimer>
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
 #include <cstdint>
@@ -39,6 +40,8 @@ public:
     // pacer's budget (FramePacer.h) is drawn over several turns of the event loop and counts once
     // whole.
     int framesRendered() const { return m_frames; }
+    // Whether the last paint showed a whole frame (not the stand-in of one under way).
+    bool frameComplete() const { return m_frameComplete; }
     // The value a uniform of the program that drew the last frame holds (tests: sliders reach
     // the GPU). Empty when the program has no such uniform.
     std::optional<float> uniformValue(const QString& name);
@@ -81,6 +84,7 @@ protected:
     void wheelEvent(QWheelEvent* event) override;
     void mouseDoubleClickEvent(QMouseEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
+    void timerEvent(QTimerEvent* event) override;
 
 private:
     enum class Drag { None, Orbit, Light, Wipe };
@@ -91,6 +95,8 @@ private:
     void measureSlice();
     void dropMeasurement();
     void drawOverlays(class QPainter& painter, bool heatMap, bool message);
+    // Keeps an unfinished frame or measurement going whatever happened to its next step.
+    void watch();
 
     PreviewScene m_scene;
     PreviewStats m_stats;
@@ -101,6 +107,11 @@ private:
     class QTimer* m_sliceTimer;
     class QTimer* m_uploadPoll;
     class QTimer* m_continueFrame;
+    // While a frame or its figures are unfinished: asks again for whatever step is due where
+    // none is on its way (a paint request the platform dropped left a view on its stand-in,
+    // "measuring the error…", until the mouse moved). Not a QTimer: nothing else stops it.
+    QBasicTimer m_watchdog;
+    int m_paintsSinceWatch = 0;
     std::uint64_t m_sceneSerial = 1; // the frame's: a new scene or size starts a new frame
     bool m_frameComplete = false;
     int m_measureSlices = 0;

@@ -7,6 +7,7 @@
 #include "parallax/render/Camera.h" // parallax-render: OrbitCamera, DirectionalLight
 #include "parallax/render/Mesh.h"   // parallax-render: MeshKind
 #include "parallax/trace/Technique.h"
+#include "preview/HeatMode.h"
 
 #include <QString>
 #include <memory>
@@ -49,6 +50,7 @@ float meshRadius(const SharedView& view);
 
 struct ViewOverlays {
     bool heatMap = false;
+    HeatMode heatMode = HeatMode::Technique;    // which error the heat map shows
     bool wipe = false;                          // A/B wipe on
     Technique wipeTechnique = Technique::Exact; // the right-hand side (B)
     float wipePosition = 0.5f;                  // divider, 0..1 across the view

@@ -7,8 +7,11 @@
 #include "widgets/ImageConvert.h"
 #include "widgets/TechniqueCombo.h"
 
+#include <QActionGroup>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -16,13 +19,23 @@
 namespace px::studio {
 
 QString Viewport::figuresExplained() {
-    return tr("Frame time (CPU wall clock around the draw and glFinish), mean "
-              "height fetches per pixel, and the error of each pixel's hit against "
-              "the exact intersection, in texels (mean, 99th percentile and max), "
-              "and the share of pixels whose hit lies on another surface (more than "
-              "2 texels from the exact one): a few such pixels lift the mean above "
-              "the p99. Left out: pixels seen steeper than 89°, and pixels whose exact "
-              "hit lies off the surface this view shows (near a mesh's silhouette).");
+    return tr("Frame time (CPU wall clock around the draw and glFinish) and mean height "
+              "fetches per pixel. Two errors, in texels of the height map (99th percentile, "
+              "mean, max): the technique's own, its hit against the exact hit on the same "
+              "filtered surface it marches (the mip level of the pixel's footprint), which "
+              "its settings change; and the filtering's, that exact hit against the exact "
+              "hit on level 0, which no setting of the technique changes. Each pixel weighs "
+              "the texture area it covers, as the bench's evenly spread rays do, so the "
+              "figures do not follow the window's size, and at the bench's angle they are "
+              "the bench's (Compare). The share of the area whose hit lies on another "
+              "surface (more than 2 texels from the exact one): a little of it lifts the "
+              "mean above the p99. Left out: pixels seen steeper than 89°, and pixels whose "
+              "exact hit lies off the surface this view shows (near a mesh's silhouette).");
+}
+
+QString Viewport::figuresMeasure() {
+    return tr("technique: its hit vs the exact hit on the mip level it reads · filtering: "
+              "that level vs level 0 · weighted by texture area");
 }
 
 Viewport::Viewport(int index, MaterialDocument* document, const QString& liveReason,
@@ -40,6 +53,18 @@ Viewport::Viewport(int index, MaterialDocument* document, const QString& liveRea
     m_heatMap->setCheckable(true);
     m_heatMap->setToolTip(hints::heatMap());
     m_heatMap->setStatusTip(hints::heatMap());
+    // The arrow picks which error the map shows; the button turns it on and off.
+    m_heatMap->setPopupMode(QToolButton::MenuButtonPopup);
+    auto* heatModes = new QMenu(m_heatMap);
+    auto* heatGroup = new QActionGroup(heatModes);
+    m_heatTechnique = heatModes->addAction(tr("Technique error (vs exact on its mip level)"));
+    m_heatFiltering = heatModes->addAction(tr("Filtering error (its mip level vs level 0)"));
+    for (QAction* a : {m_heatTechnique, m_heatFiltering}) {
+        a->setCheckable(true);
+        heatGroup->addAction(a);
+    }
+    m_heatTechnique->setChecked(true);
+    m_heatMap->setMenu(heatModes);
     m_wipe = new QToolButton(this);
     m_wipe->setText(tr("A|B"));
     m_wipe->setCheckable(true);
@@ -80,11 +105,11 @@ Viewport::Viewport(int index, MaterialDocument* document, const QString& liveRea
     m_stats->setObjectName(QStringLiteral("figures"));
     m_stats->setTextFormat(Qt::RichText);
     m_stats->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    // Three lines, each cut to the view's width (whole in statsText and the tooltip): were the
+    // Four lines, each cut to the view's width (whole in statsText and the tooltip): were the
     // view's size to follow the figures' text, every new figure would resize the views and
     // restart their frames (a 2-view window jumped 212 <-> 506 px as figures came and went).
     m_stats->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-    m_stats->setText(QStringLiteral("<b>8</b><br>8<br>8"));
+    m_stats->setText(QStringLiteral("<b>8</b><br>8<br>8<br>8"));
     m_stats->setFixedHeight(m_stats->sizeHint().height());
     m_stats->installEventFilter(this);
 
@@ -104,6 +129,16 @@ Viewport::Viewport(int index, MaterialDocument* document, const QString& liveRea
     });
     connect(m_heatMap, &QToolButton::toggled, this,
             [this](bool on) { editOverlays([on](ViewOverlays& o) { o.heatMap = on; }); });
+    auto showMode = [this](HeatMode mode) {
+        editOverlays([mode](ViewOverlays& o) {
+            o.heatMode = mode;
+            o.heatMap = true; // picking what to show shows it
+        });
+    };
+    connect(m_heatTechnique, &QAction::triggered, this,
+            [showMode] { showMode(HeatMode::Technique); });
+    connect(m_heatFiltering, &QAction::triggered, this,
+            [showMode] { showMode(HeatMode::Filtering); });
     connect(m_wipe, &QToolButton::toggled, this,
             [this](bool on) { editOverlays([on](ViewOverlays& o) { o.wipe = on; }); });
     connect(m_wipeTechnique, &TechniqueCombo::techniqueChosen, this,
@@ -134,12 +169,19 @@ void Viewport::setOverlays(const ViewOverlays& overlays) {
     m_heatMap->blockSignals(true);
     m_wipe->blockSignals(true);
     m_heatMap->setChecked(overlays.heatMap);
+    (overlays.heatMode == HeatMode::Filtering ? m_heatFiltering : m_heatTechnique)
+        ->setChecked(true);
+    m_heatMap->setText(overlays.heatMode == HeatMode::Filtering ? tr("Filtering") : tr("Error"));
     m_wipe->setChecked(overlays.wipe);
     m_heatMap->blockSignals(false);
     m_wipe->blockSignals(false);
     m_wipeTechnique->setTechnique(overlays.wipeTechnique);
     m_wipeTechnique->setVisible(overlays.wipe);
     pushScene();
+}
+
+QAction* Viewport::heatModeAction(HeatMode mode) const {
+    return mode == HeatMode::Filtering ? m_heatFiltering : m_heatTechnique;
 }
 
 void Viewport::editOverlays(const std::function<void(ViewOverlays&)>& change) {
@@ -204,13 +246,19 @@ void Viewport::showStats() {
             m_figures[0] += tr(" · %1 ms").arg(st.frameMs, 0, 'f', 1);
         if (st.valid && st.pixels > 0) {
             m_figures[0] += tr(" · %1 fetches/px").arg(st.fetchesPerPixel, 0, 'f', 1);
-            // Worst first: the line is cut at the view's width.
-            m_figures << tr("error in texels: max %1, p99 %2, mean %3")
-                             .arg(st.maxError, 0, 'f', 2)
+            // The p99s first: the line is cut at the view's width.
+            m_figures << tr("p99 texels: technique %1, filtering %2 · mean %3, %4 · max %5, %6")
                              .arg(st.p99Error, 0, 'f', 3)
-                             .arg(st.meanError, 0, 'f', 3);
-            QString third =
-                tr("%1 % on another surface").arg(100.0 * st.otherSurface / st.pixels, 0, 'f', 2);
+                             .arg(st.filteringP99Error, 0, 'f', 3)
+                             .arg(st.meanError, 0, 'f', 3)
+                             .arg(st.filteringMeanError, 0, 'f', 3)
+                             .arg(st.maxError, 0, 'f', 2)
+                             .arg(st.filteringMaxError, 0, 'f', 2);
+            QString third = tr("%1 % on another surface · %2 px")
+                                .arg(100.0 * st.otherSurfaceShare, 0, 'f', 2)
+                                .arg(QLocale().toString(st.pixels));
+            if (st.area > 0.0)
+                third += tr(" covering %1 tiles").arg(st.area, 0, 'g', 3);
             // What is left out (docs/meshes.md): said, so the figures' pixels are known.
             QStringList left;
             if (st.steepPixels > 0)
@@ -222,7 +270,9 @@ void Viewport::showStats() {
                 third += tr(" · not counted: %1").arg(left.join(QStringLiteral(", ")));
             m_figures << third;
         } else
-            m_figures << (st.valid ? tr("no surface in view") : tr("measuring the error…"));
+            m_figures << (st.valid ? tr("no surface in view") : tr("measuring the error…"))
+                      << QString();
+        m_figures << figuresMeasure();
     }
     fitStats();
 }

@@ -1,12 +1,14 @@
 #pragma once
 // One cell of the viewport grid: a header to pick the viewport's technique and overlays, the
-// live preview (or a placeholder), and three lines of figures: technique, frame time, fetches
-// per pixel, error against the exact intersection.
+// live preview (or a placeholder), and four lines of figures: technique, frame time, fetches
+// per pixel; the technique's error and the filtering's (ErrorStats.h); the share on another
+// surface and what was counted; what the errors measure.
 
 #include "preview/PreviewScene.h"
 
 #include <QFrame>
 
+class QAction;
 class QLabel;
 class QToolButton;
 
@@ -38,7 +40,11 @@ public:
     TechniqueCombo* wipeCombo() const { return m_wipeTechnique; }
     QToolButton* heatMapButton() const { return m_heatMap; }
     QToolButton* wipeButton() const { return m_wipe; }
+    // The heat map's two modes (its button's menu): the technique's error, the filtering's.
+    QAction* heatModeAction(HeatMode mode) const;
     QString statsText() const;
+    // The line under the figures saying what they measure.
+    static QString figuresMeasure();
 
 signals:
     void activated(int index);
@@ -66,6 +72,8 @@ private:
     QLabel* m_title;
     TechniqueCombo* m_technique;
     QToolButton* m_heatMap;
+    QAction* m_heatTechnique;
+    QAction* m_heatFiltering;
     QToolButton* m_wipe;
     TechniqueCombo* m_wipeTechnique;
     PreviewWidget* m_preview = nullptr;

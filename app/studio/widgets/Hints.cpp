@@ -106,8 +106,10 @@ QString linkViews() {
                        "compare on the same view. Unlink to move one view alone.");
 }
 QString heatMap() {
-    return QObject::tr("Show each pixel's error against the exact intersection, in texels "
-                       "(blue 0, green 0.5, yellow 1, red 2 or more).");
+    return QObject::tr("Show each pixel's error in texels (blue 0, green 0.5, yellow 1, red 2 or "
+                       "more): the technique's own (its hit against the exact hit on the mip "
+                       "level it reads), or, from the arrow, the filtering's (that level's exact "
+                       "hit against level 0's).");
 }
 QString wipe() {
     return QObject::tr("A/B wipe: the left of this view shows its technique, the right another "

@@ -63,6 +63,8 @@ public:
     // File operations as the menus, dialogs and drops use them. Each failure shows a message
     // naming the file and leaves the document as it was; they return whether they succeeded.
     void newSample(ProceduralMap kind, int size = 512);
+    // A material with no maps (asks first where work would be lost): a height map to load next.
+    void newEmptyMaterial();
     bool openFile(const QString& path);
     bool saveTo(const QString& path);
     bool loadMap(MapKind kind, const QString& path, bool depth = false);

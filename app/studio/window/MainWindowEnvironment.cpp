@@ -20,7 +20,8 @@ namespace px::studio {
 namespace {
 
 const QString kEnvironmentFilter =
-    QObject::tr("Environments (*.hdr *.exr *.tif *.tiff *.png);;All files (*)");
+    QObject::tr("Environments, or one face of a sky box (*.hdr *.exr *.tif *.tiff *.png *.jpg "
+                "*.jpeg *.tga *.bmp);;All files (*)");
 
 // How a material file was last lit in the editor (its settings, as its mesh: MainWindowMesh.cpp):
 // "previewEnvironment" is "sky", a file, or "" for none; a material never shown has no key.

@@ -8,6 +8,7 @@
 #include "panels/ExportDialog.h"
 #include "panels/ImportSummaryDialog.h"
 #include "panels/MaterialPanel.h"
+#include "panels/SetPickerDialog.h"
 #include "parallax/material/MapFileName.h"
 #include "parallax/mesh/MeshLoader.h"
 #include "preview/ViewportGrid.h"
@@ -18,7 +19,6 @@
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileInfo>
-#include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
@@ -68,6 +68,15 @@ void MainWindow::newSample(ProceduralMap kind, int size) {
         8000);
 }
 
+void MainWindow::newEmptyMaterial() {
+    if (!maybeSave())
+        return;
+    m_document->reset(DocumentState{}, {});
+    statusBar()->showMessage(tr("A new empty material: load or drop its height map, or import a "
+                                "texture set."),
+                             8000);
+}
+
 bool MainWindow::openFile(const QString& path) {
     if (!maybeSave())
         return false;
@@ -89,6 +98,12 @@ bool MainWindow::openFile(const QString& path) {
         const QScopedValueRollback restoring(m_restoringPreview, true);
         restoreMaterialMesh();
         restoreMaterialLight();
+        if (const std::optional<LightDirection> light = m_document->material().light) {
+            SharedView view = m_viewports->activeView();
+            view.light.azimuthDeg = light->azimuthDeg;
+            view.light.elevationDeg = light->elevationDeg;
+            m_viewports->editView(view);
+        }
     }
     return true;
 }
@@ -112,7 +127,11 @@ void MainWindow::bakeMissingConeMaps() {
 }
 
 bool MainWindow::saveTo(const QString& path) {
-    Result<DocumentState> saved = saveDocumentState(m_document->state(), path.toStdString());
+    // The light the material is seen under goes into its file (the view's, not an undo step).
+    DocumentState state = m_document->state();
+    const DirectionalLight& light = m_viewports->activeView().light;
+    state.material.light = LightDirection{light.azimuthDeg, light.elevationDeg};
+    Result<DocumentState> saved = saveDocumentState(state, path.toStdString());
     if (!saved) {
         showProblem(tr("Cannot save the material"), QString::fromStdString(saved.error().message));
         return false;
@@ -227,18 +246,12 @@ bool MainWindow::importSet(const std::vector<std::string>& files, const QString&
                            QString set) {
     const std::vector<std::string> names = textureSetNames(files);
     if (set.isEmpty() && names.size() > 1 && m_interactive) {
-        // Never mixed: the user says which.
-        QStringList items;
-        for (const std::string& name : names)
-            items << QString::fromStdString(name);
-        bool ok = false;
-        set = QInputDialog::getItem(this, tr("Which texture set?"),
-                                    tr("%1 holds %2 texture sets. Import which one?")
-                                        .arg(QFileInfo(source).fileName())
-                                        .arg(items.size()),
-                                    items, 0, false, &ok);
-        if (!ok)
+        // Never mixed: the user says which, from a list to filter that marks the sets without
+        // relief.
+        SetPickerDialog picker(QFileInfo(source).fileName(), setChoices(files), this);
+        if (picker.exec() != QDialog::Accepted || picker.chosen().isEmpty())
             return false;
+        set = picker.chosen();
     }
     Result<TextureSetPlan> plan = planTextureSet(files, source.toStdString(), set.toStdString());
     if (!plan) {
@@ -301,7 +314,10 @@ void MainWindow::offerDerivedHeight(ImportedSet set) {
 void MainWindow::adoptImported(const ImportedSet& set) {
     DocumentState state = importedState(set);
     state.views = m_document->state().views; // the viewports' techniques are not the material's
-    m_document->reset(std::move(state), {});
+    // A height map derived from the normal map is work on no disk: unsaved until saved, so the
+    // next import or open asks before replacing it.
+    const bool derived = state.isUnsaved(MapKind::Height);
+    m_document->reset(std::move(state), {}, derived);
     showImportSummary(set);
     bakeMissingConeMaps();
 }

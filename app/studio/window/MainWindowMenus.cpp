@@ -5,6 +5,7 @@
 #include "panels/ComparePanel.h"
 #include "preview/Viewport.h"
 #include "preview/ViewportGrid.h"
+#include "widgets/BakeDeviceMenu.h"
 #include "window/MainWindow.h"
 #include "window/MainWindowActions.h"
 
@@ -65,6 +66,11 @@ void MainWindow::createActions() {
 void MainWindow::createMenus() {
     // File
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* empty =
+        action(this, tr("New &Empty Material"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N),
+               tr("A new material with no maps: load or drop its height map next."));
+    connect(empty, &QAction::triggered, this, &MainWindow::newEmptyMaterial);
+    file->addAction(empty);
     QMenu* samples = file->addMenu(tr("&New Sample"));
     for (ProceduralMap kind : sampleKinds()) {
         const QString name =
@@ -176,11 +182,20 @@ void MainWindow::createMenus() {
     m_actions->link->setChecked(m_viewports->linked());
     connect(m_actions->link, &QAction::toggled, m_viewports, &ViewportGrid::setLinked);
     connect(m_viewports, &ViewportGrid::linkedChanged, m_actions->link, &QAction::setChecked);
-    m_actions->heatMap =
-        action(this, tr("Error &Heat Map"), QKeySequence(Qt::Key_H),
-               tr("Show the active viewport's error against the exact intersection."));
+    m_actions->heatMap = action(this, tr("Error &Heat Map"), QKeySequence(Qt::Key_H),
+                                tr("Show the active viewport's technique error: its hit against "
+                                   "the exact hit on the mip level it reads."));
     connect(m_actions->heatMap, &QAction::triggered, this, [this] {
         m_viewports->viewport(m_viewports->activeViewport())->heatMapButton()->toggle();
+    });
+    // The heat map of the filtering's error (the mip level against level 0), Shift+H.
+    QAction* filteringHeat =
+        action(this, tr("&Filtering Error Heat Map"), QKeySequence(Qt::SHIFT | Qt::Key_H),
+               tr("Show the active viewport's filtering error: the exact hit on the mip level "
+                  "its technique reads against the exact hit on level 0."));
+    connect(filteringHeat, &QAction::triggered, this, [this] {
+        Viewport* v = m_viewports->viewport(m_viewports->activeViewport());
+        v->heatModeAction(HeatMode::Filtering)->trigger();
     });
     m_actions->wipe = action(this, tr("A/B &Wipe"), QKeySequence(Qt::Key_W),
                              tr("Split the active viewport between two techniques."));
@@ -190,7 +205,7 @@ void MainWindow::createMenus() {
     QAction* reset = action(this, tr("&Reset Camera"), QKeySequence(Qt::Key_Home),
                             tr("Back to the default orbit."));
     connect(reset, &QAction::triggered, m_viewports, &ViewportGrid::resetCameras);
-    view->addActions({m_actions->link, m_actions->heatMap, m_actions->wipe, reset});
+    view->addActions({m_actions->link, m_actions->heatMap, filteringHeat, m_actions->wipe, reset});
     view->addSeparator();
     QAction* fullScreen = action(this, tr("&Full Screen"), QKeySequence::FullScreen,
                                  tr("The window over the whole screen, and back."));
@@ -225,6 +240,7 @@ void MainWindow::createMenus() {
     connect(cancel, &QAction::triggered, m_baker, &BakeRunner::cancel);
     bake->addSeparator();
     bake->addAction(cancel);
+    bake->addMenu(makeBakeDeviceMenu(m_baker, bake));
 
     // Compare
     QMenu* compare = menuBar()->addMenu(tr("&Compare"));

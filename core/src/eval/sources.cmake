@@ -2,6 +2,7 @@
 target_sources(parallax-core PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/EvalControl.cpp
   ${CMAKE_CURRENT_LIST_DIR}/HitErrorStats.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/WeightedErrorStats.cpp
   ${CMAKE_CURRENT_LIST_DIR}/QualitySweep.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RayBatch.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Bench.cpp

@@ -1,6 +1,7 @@
 #include "parallax/light/Environment.h"
 
 #include "parallax/image/ImageFile.h"
+#include "parallax/light/CubeMapSky.h"
 
 #include <algorithm>
 #include <cmath>
@@ -126,10 +127,16 @@ Result<Image> loadEnvironment(const std::string& path) {
     if (!read)
         return read.error();
     const Image& in = *read;
-    if (in.width != 2 * in.height)
+    if (in.width != 2 * in.height) {
+        // A square file named as a cube face: the sky box of six, made equirectangular.
+        if (const std::optional<CubeFaceFiles> faces = cubeFaceFiles(path);
+            faces && in.width == in.height)
+            return loadCubeMapSky(*faces, kMaxWidth);
         return fileError(path, "is " + std::to_string(in.width) + " x " +
                                    std::to_string(in.height) +
-                                   "; an equirectangular environment is twice as wide as high");
+                                   "; an equirectangular environment is twice as wide as high "
+                                   "(a cube map's faces are named like sky_px.hdr ... sky_nz.hdr)");
+    }
     // Grey (with or without alpha) is grey in every channel; alpha is no light.
     const int colours = in.channels >= 3 ? 3 : 1;
     Image rgb(in.width, in.height, 3);

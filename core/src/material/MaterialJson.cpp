@@ -203,7 +203,7 @@ bool readHeader(const json& root, Reader& r) {
 void readBody(const json& root, Reader& r, Material& m) {
     r.object(root, "",
              {"format", "version", "name", "maps", "surface", "height", "wrap", "tiling",
-              "technique", "normal", "shadow", "lighting"});
+              "technique", "normal", "shadow", "lighting", "light"});
     r.string(root, "", "name", m.name);
     if (const json* maps = r.member(root, "maps");
         maps && r.object(*maps, "/maps",
@@ -306,6 +306,13 @@ void readBody(const json& root, Reader& r, Material& m) {
         r.number(*l, "/lighting", "metallic", kUnit, m.metallic);
         r.number(*l, "/lighting", "specular", kUnit, m.specular);
         r.number(*l, "/lighting", "shininess", kShininess, m.shininess);
+    }
+    if (const json* l = r.member(root, "light");
+        l && r.object(*l, "/light", {"azimuth", "elevation"})) {
+        LightDirection light;
+        r.number(*l, "/light", "azimuth", kLightAzimuth, light.azimuthDeg);
+        r.number(*l, "/light", "elevation", kLightElevation, light.elevationDeg);
+        m.light = light;
     }
 }
 
@@ -449,6 +456,9 @@ std::string materialToJson(const Material& m) {
                         {"metallic", shortestDecimal(m.metallic)},
                         {"specular", shortestDecimal(m.specular)},
                         {"shininess", shortestDecimal(m.shininess)}};
+    if (m.light) // written only where the editor saved one, so other files read as before
+        root["light"] = {{"azimuth", shortestDecimal(m.light->azimuthDeg)},
+                         {"elevation", shortestDecimal(m.light->elevationDeg)}};
     return root.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 

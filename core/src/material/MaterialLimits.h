@@ -19,6 +19,8 @@ inline constexpr NumberRange kTexelsPerPixel{1e-6, 1e6};
 inline constexpr NumberRange kAutoMaxPolar{0.0, 89.0};
 inline constexpr NumberRange kUnit{0.0, 1.0}; // softness, roughness, metallic, specular
 inline constexpr NumberRange kShininess{1.0, 10000.0};
+inline constexpr NumberRange kLightAzimuth{-360.0, 360.0}; // degrees
+inline constexpr NumberRange kLightElevation{-90.0, 90.0}; // degrees
 
 struct IntRange {
     int lo;

@@ -49,6 +49,10 @@ std::vector<MaterialProblem> validateMaterial(const Material& m, MaterialCheck c
     number("/lighting/metallic", m.metallic, kUnit);
     number("/lighting/specular", m.specular, kUnit);
     number("/lighting/shininess", m.shininess, kShininess);
+    if (m.light) {
+        number("/light/azimuth", m.light->azimuthDeg, kLightAzimuth);
+        number("/light/elevation", m.light->elevationDeg, kLightElevation);
+    }
 
     // The maps the technique and the normal source read must be there.
     if (check == MaterialCheck::Preset)

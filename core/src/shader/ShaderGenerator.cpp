@@ -69,7 +69,10 @@ std::vector<std::string> definesFor(const VariantKey& k) {
     on(k.wrap == WrapMode::Clamp, "PX_HAS_CLAMP_WRAP");
     on(k.lighting == LightingModel::MetallicRoughness, "PX_HAS_METALLIC_ROUGHNESS");
     on(k.tbn == TbnSource::Derivatives, "PX_HAS_DERIVATIVE_TBN");
-    on(k.output == ShaderOutput::Surface, "PX_HAS_SURFACE_OUTPUT");
+    const bool surface =
+        k.output == ShaderOutput::Surface || k.output == ShaderOutput::FootprintSurface;
+    on(surface, "PX_HAS_SURFACE_OUTPUT");
+    on(k.output == ShaderOutput::FootprintSurface, "PX_HAS_FOOTPRINT_REFERENCE");
     on(k.output == ShaderOutput::Trace, "PX_HAS_TRACE_OUTPUT");
     on(k.environment, "PX_HAS_ENVIRONMENT");
     on(k.flavour == KernelFlavour::Production && k.readsHeightMap(), "PX_HAS_HARDWARE_SAMPLING");
@@ -78,7 +81,7 @@ std::vector<std::string> definesFor(const VariantKey& k) {
     const bool parallax = info(k.technique).parallax;
     on(mesh && (parallax || k.normalSource != NormalSource::None), "PX_HAS_TANGENT_FRAME");
     on(mesh && (parallax || k.albedoMap || k.surfaceMap || k.normalSource != NormalSource::None ||
-                k.output == ShaderOutput::Surface),
+                surface),
        "PX_HAS_TEXTURE_COORDINATES");
     return d;
 }

@@ -35,7 +35,7 @@ std::optional<VariantKey> VariantKey::fromBits(std::uint32_t b) {
         return std::nullopt;
     const std::uint32_t technique = b & 15u;
     const std::uint32_t output = (b >> 12) & 3u;
-    if (technique >= kTechniqueCount || output > 2)
+    if (technique >= kTechniqueCount || output > 3)
         return std::nullopt;
     VariantKey k;
     k.technique = static_cast<Technique>(technique);
@@ -57,7 +57,7 @@ Status VariantKey::validate() const {
         return Error{"the variant's technique is out of range"};
     if (static_cast<int>(normalSource) < 0 || static_cast<int>(normalSource) > 3)
         return Error{"the variant's normal source is out of range"};
-    if (static_cast<int>(output) < 0 || static_cast<int>(output) > 2)
+    if (static_cast<int>(output) < 0 || static_cast<int>(output) > 3)
         return Error{"the variant's output is out of range"};
     if (technique == Technique::Normal && normalSource == NormalSource::None &&
         output == ShaderOutput::Color)
@@ -96,6 +96,8 @@ std::string VariantKey::name() const {
         n += "+surface";
     else if (output == ShaderOutput::Trace)
         n += "+trace";
+    else if (output == ShaderOutput::FootprintSurface)
+        n += "+footprint-surface";
     if (environment)
         n += "+environment";
     if (flavour == KernelFlavour::Verify)
@@ -104,6 +106,12 @@ std::string VariantKey::name() const {
 }
 
 VariantKey canonical(VariantKey k) {
+    if (k.output == ShaderOutput::FootprintSurface) {
+        if (k.technique == Technique::Exact)
+            k.flavour = KernelFlavour::Verify; // textureGather reads level 0 only
+        else
+            k.output = ShaderOutput::Surface; // only `exact` reads another level here
+    }
     if (k.output != ShaderOutput::Color) {
         // The hit data only: nothing is shaded.
         k.shadow = false;

@@ -65,6 +65,7 @@ Material everyFieldChanged() {
     m.shininess = 64.0f;
     m.surface = {HeightChannel::Green, HeightChannel::Alpha, HeightChannel::Blue, true};
     m.heightDerivedFrom = "rock_nrm.png";
+    m.light = LightDirection{-47.5f, 12.25f};
     return m;
 }
 
@@ -102,6 +103,7 @@ void compareMaterials(const Material& a, const Material& b) {
     QCOMPARE(a.shininess, b.shininess);
     QVERIFY(a.surface == b.surface);
     QCOMPARE(a.heightDerivedFrom, b.heightDerivedFrom);
+    QVERIFY(a.light == b.light);
 }
 
 const char* kHeader = R"("format": "parallax-studio-material", "version": 1)";
@@ -330,6 +332,12 @@ void MaterialFileTest::problems_data() {
                               << "m.json: /lighting/specular: expected a number 0..1, got 1.5";
     QTest::newRow("shininess") << body(R"("lighting": {"shininess": 0})")
                                << "m.json: /lighting/shininess: expected a number 1..10000, got 0";
+    QTest::newRow("light elevation")
+        << body(R"("light": {"azimuth": 10, "elevation": 95})")
+        << "m.json: /light/elevation: expected a number -90..90, got 95";
+    QTest::newRow("light azimuth")
+        << body(R"("light": {"azimuth": "north"})")
+        << R"(m.json: /light/azimuth: expected a number -360..360, got "north")";
 }
 
 void MaterialFileTest::problems() {

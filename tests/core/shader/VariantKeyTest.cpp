@@ -30,13 +30,13 @@ void VariantKeyTest::bitsRoundTrip() {
             ++decoded;
         }
     }
-    // 11 techniques of 16 codes, 3 outputs of 4 codes.
-    QCOMPARE(decoded, static_cast<int>(kVariantKeyCount) / 16 * 11 / 4 * 3);
+    // 11 techniques of 16 codes, every output code (4) used.
+    QCOMPARE(decoded, static_cast<int>(kVariantKeyCount) / 16 * 11);
 }
 
 void VariantKeyTest::outOfRangeBitsAreRejected() {
-    QVERIFY(!VariantKey::fromBits(11).has_value());       // technique code 11
-    QVERIFY(!VariantKey::fromBits(3u << 12).has_value()); // output code 3
+    QVERIFY(!VariantKey::fromBits(11).has_value());               // technique code 11
+    QVERIFY(!VariantKey::fromBits(15u | (3u << 12)).has_value()); // technique code 15
     QVERIFY(!VariantKey::fromBits(kVariantKeyCount).has_value());
 }
 
@@ -60,7 +60,10 @@ void VariantKeyTest::canonicalIsIdempotentAndValidityPreserving() {
         QVERIFY(canonical(c) == c);
         QVERIFY(c.technique == k->technique ||
                 c.technique == Technique::None); // a hit no one reads
-        QVERIFY(c.output == k->output);
+        // The footprint reference is exact's: any other technique's draws as Surface.
+        QVERIFY(c.output == k->output ||
+                (k->output == ShaderOutput::FootprintSurface && c.output == ShaderOutput::Surface &&
+                 k->technique != Technique::Exact));
     }
 }
 
@@ -73,7 +76,8 @@ void VariantKeyTest::variantCount() {
     const std::size_t production = colour + (9 * 2 * 2 + 2 * 2) + (9 * 2 + 2);
     // Verify kernels for every variant that reads the height map: all but colour none (16),
     // normal from a normal map (16), and none/normal in the surface (2 x tbn 2) and trace outputs.
-    const std::size_t verify = production - (16 + 16 + 4 + 2);
+    // Plus exact's footprint reference (wrap 2 x tbn 2), verify kernels only.
+    const std::size_t verify = production - (16 + 16 + 4 + 2) + 2 * 2;
     // Under an environment: every colour variant once more, production kernels only.
     const std::size_t environment = colour;
     const std::size_t expected = production + verify + environment;
@@ -94,6 +98,16 @@ void VariantKeyTest::canonicalDropsWhatIsNeverRead() {
     lit.output = ShaderOutput::Surface;
     QVERIFY(!canonical(lit).environment); // nothing is lit in the hit data
     QCOMPARE(canonical(lit).flavour, KernelFlavour::Verify);
+
+    // The reference on the footprint's level: exact alone, in the verify kernels.
+    VariantKey footprint;
+    footprint.output = ShaderOutput::FootprintSurface;
+    QVERIFY(canonical(footprint).output == ShaderOutput::Surface); // pom reads that level anyway
+    footprint.technique = Technique::Exact;
+    QVERIFY(canonical(footprint).output == ShaderOutput::FootprintSurface);
+    QCOMPARE(canonical(footprint).flavour, KernelFlavour::Verify);
+    QCOMPARE(QString::fromStdString(canonical(footprint).name()),
+             QString("exact+footprint-surface+verify"));
 
     VariantKey k;
     k.technique = Technique::None;

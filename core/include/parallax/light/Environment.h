@@ -17,8 +17,10 @@ glm::vec3 equirectDirection(glm::vec2 uv);
 // Bilinear, u wrapping, v clamped; a grey map gives grey.
 glm::vec3 sampleEquirect(const Image& map, glm::vec3 direction);
 
-// Reads an equirectangular HDR or EXR (any image the project reads) as RGB radiance. Errors name
-// the file: missing, not an image, NaN/Inf or negative texels, not twice as wide as high.
+// Reads an equirectangular HDR or EXR (any image the project reads) as RGB radiance, or one face
+// of a sky box of six named as CubeMapSky.h says (the six made equirectangular). Errors name the
+// file: missing, not an image, NaN/Inf or negative texels, not twice as wide as high (and not a
+// cube face), a cube's face missing or of another size.
 // Larger than 2048 x 1024 is resampled down to that (the prefilter needs no more). Grey maps, with
 // or without alpha, give grey light; alpha is ignored.
 Result<Image> loadEnvironment(const std::string& path);

@@ -67,6 +67,14 @@ struct SurfaceChannels {
     bool operator==(const SurfaceChannels&) const = default;
 };
 
+// Where the light the material was last seen under comes from (docs/conventions.md's angles as
+// the editor's light: azimuth about the up axis, elevation above the surface's plane), degrees.
+struct LightDirection {
+    float azimuthDeg = 135.0f;
+    float elevationDeg = 40.0f;
+    bool operator==(const LightDirection&) const = default;
+};
+
 struct Material {
     std::string name = "untitled";
     MaterialMaps maps;
@@ -98,6 +106,8 @@ struct Material {
     float metallic = 0.0f;  // used where there is no metallic map
     float specular = 0.3f;  // Blinn-Phong specular strength
     float shininess = 32.0f;
+    // The light the material was saved under in the editor; unset: the viewer's own.
+    std::optional<LightDirection> light;
 };
 
 } // namespace px

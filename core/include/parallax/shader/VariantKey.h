@@ -25,6 +25,11 @@ enum class ShaderOutput {
     Color,   // the shaded, sRGB-encoded colour
     Surface, // (u, v, t, fetches) of each pixel's hit, into a float target: heat maps and tests
     Trace,   // the canonical trace scene (docs/conventions.md §5): pixel (i, j) is ray (i, j)
+    // As Surface, but `exact` walks the height level the pixel's footprint asks for (the level
+    // the marching techniques read), not level 0: the reference on the filtered surface they
+    // march (the editor's technique and filtering errors). Verify kernels only (a gather reads
+    // level 0); other techniques draw as Surface.
+    FootprintSurface,
 };
 
 // How the kernels read the height and cone maps. Production: as an engine would, through the
@@ -79,7 +84,9 @@ inline constexpr std::uint32_t kVariantKeyCount = 1u << kVariantKeyBits;
 // occlusion channel of the surface map). A parallax technique whose hit nothing reads (no map, no
 // shadow, no clamp discard) draws exactly as `none` and becomes `none`. A variant that reads no
 // height map has one flavour, production. The environment lights the colour output only, in the
-// production flavour (the verify kernels serve the hit data, which no light changes). Idempotent.
+// production flavour (the verify kernels serve the hit data, which no light changes). The footprint
+// surface output is `exact`'s alone, in the verify flavour; any other technique's is Surface.
+// Idempotent.
 VariantKey canonical(VariantKey key);
 
 // Every valid canonical key, in bits() order: what `parallax-cli shader --dump-all` writes and

@@ -31,7 +31,7 @@ struct DrawOptions {
     // first use and kept while this pointer is the one drawn.
     std::shared_ptr<const MeshData> customMesh;
     TbnSource tbn = TbnSource::VertexTangents;
-    ShaderOutput output = ShaderOutput::Color; // Color or Surface (hit data into a float target)
+    ShaderOutput output = ShaderOutput::Color; // Color, Surface or FootprintSurface (hit data)
     // Production: the texture units filter, as an engine's shader would; Verify: the kernels
     // that match the CPU to the bit.
     KernelFlavour kernels = KernelFlavour::Production;
