@@ -24,6 +24,10 @@ QString bakeTitle(BakeKind kind) {
         return QObject::tr("cone map");
     case BakeKind::RelaxedCone:
         return QObject::tr("relaxed cone map");
+    case BakeKind::Occlusion:
+        return QObject::tr("ambient occlusion map");
+    case BakeKind::BentNormal:
+        return QObject::tr("bent normal map");
     }
     return {};
 }
@@ -51,6 +55,19 @@ BakeOutcome runBake(const BakeRequest& request, const BakeControl& control,
             outcome.cancelled = true;
         else
             outcome.error = QString::fromStdString(normal.error().message);
+    } else if (request.kind == BakeKind::Occlusion || request.kind == BakeKind::BentNormal) {
+        const OcclusionOutputs outputs = request.kind == BakeKind::Occlusion
+                                             ? OcclusionOutputs::AmbientOcclusion
+                                             : OcclusionOutputs::Both;
+        Result<OcclusionMaps> maps = bakeOcclusion(field, request.occlusion, outputs, control);
+        if (maps) {
+            outcome.occlusion = std::move(maps->occlusion);
+            outcome.bentNormals = std::move(maps->bentNormals);
+        } else if (isCancelled(maps.error())) {
+            outcome.cancelled = true;
+        } else {
+            outcome.error = QString::fromStdString(maps.error().message);
+        }
     } else {
         const ConeKind kind =
             request.kind == BakeKind::Cone ? ConeKind::Conservative : ConeKind::Relaxed;
@@ -145,7 +162,8 @@ void BakeRunner::next() {
     // Cone bakes go to the GPU where the viewports share their context (a surface for the
     // worker's is made here, on the GUI thread, as Qt requires).
     std::shared_ptr<QOffscreenSurface> surface;
-    if (kind != BakeKind::Normal && QOpenGLContext::globalShareContext())
+    const bool cone = kind == BakeKind::Cone || kind == BakeKind::RelaxedCone;
+    if (cone && QOpenGLContext::globalShareContext())
         surface = workerSurface();
     BackgroundArena* arena = m_arena.get(); // outlives the job: ~BakeRunner waits for it
     m_watcher.setFuture(QtConcurrent::run(&m_pool, [request, control, flag, arena, surface] {

@@ -10,6 +10,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -25,6 +26,7 @@ public:
     ExportOptions options() const;
     void startExport();
     QString resultText() const;
+    QCheckBox* bakeOcclusionBox() const { return m_bakeOcclusion; }
     bool isRunning() const { return m_watcher.isRunning(); }
 
 signals:
@@ -39,6 +41,8 @@ private:
     QComboBox* m_normal;
     QComboBox* m_green;
     QCheckBox* m_force;
+    QCheckBox* m_bakeOcclusion;
+    QDoubleSpinBox* m_occlusionDistance;
     QLabel* m_result;
     QPushButton* m_export;
     QFutureWatcher<Result<ExportResult>> m_watcher;

@@ -161,6 +161,7 @@ private:
     void showShortcuts();
     void runBake(BakeKind kind);
     void onBakeFinished(const BakeOutcome& outcome);
+    void saveBentNormals(const Image& bentNormals); // MainWindowBentNormals.cpp
     void bakeMissingConeMaps();
 
     MaterialDocument* m_document;
