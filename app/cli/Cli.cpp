@@ -93,8 +93,8 @@ std::vector<std::pair<CLI::App*, Action>> addCommands(CLI::App& app) {
     std::vector<std::pair<CLI::App*, Action>> entries;
     for (Action (*registrar)(CLI::App&) :
          {addSampleCommand, addTraceCommand, addShaderCommand, addRenderCommand, addExportCommand,
-          addBenchCommand, addStabilityCommand, addBakeCommand, addRecommendCommand,
-          addImportCommand}) {
+          addBenchCommand, addBenchAoCommand, addStabilityCommand, addBakeCommand,
+          addRecommendCommand, addImportCommand}) {
         const std::size_t before = app.get_subcommands({}).size();
         Action action = registrar(app);
         entries.emplace_back(app.get_subcommands({}).at(before), std::move(action));
@@ -112,24 +112,7 @@ int run(int argc, char** argv) {
 
     installInterruptHandlers();
     const bool stdoutClosed = holdClosedStandardFiles();
-    std::vector<Entry> entries;
-    auto add = [&](Action (*registrar)(CLI::App&)) {
-        const std::size_t before = app.get_subcommands({}).size();
-        Action action = registrar(app);
-        entries.push_back({app.get_subcommands({}).at(before), std::move(action)});
-    };
-    add(addSampleCommand);
-    add(addTraceCommand);
-    add(addShaderCommand);
-    add(addRenderCommand);
-    add(addExportCommand);
-    add(addBenchCommand);
-    add(addBenchAoCommand);
-    add(addStabilityCommand);
-    add(addBakeCommand);
-    add(addRecommendCommand);
-    add(addImportCommand);
-    checkNumbers(app);
+    const std::vector<std::pair<CLI::App*, Action>> entries = addCommands(app);
 
     try {
         app.parse(argc, argv);
@@ -147,7 +130,7 @@ int run(int argc, char** argv) {
         if (Status s = checkFileOptions(*command); !s)
             return fail(s.error().message);
         try {
-            return finishStandardOutput(entry.action(), stdoutClosed);
+            return finishStandardOutput(action(), stdoutClosed);
         } catch (const std::bad_alloc&) {
             return fail("out of memory: the input is larger than this machine can hold (no "
                         "output was written)");

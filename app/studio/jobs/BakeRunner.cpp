@@ -25,6 +25,10 @@ QString bakeTitle(BakeKind kind) {
         return QObject::tr("cone map");
     case BakeKind::RelaxedCone:
         return QObject::tr("relaxed cone map");
+    case BakeKind::Occlusion:
+        return QObject::tr("ambient occlusion map");
+    case BakeKind::BentNormal:
+        return QObject::tr("bent normal map");
     }
     return {};
 }
@@ -54,6 +58,19 @@ BakeOutcome runBake(const BakeRequest& request, const BakeControl& control,
             outcome.cancelled = true;
         else
             outcome.error = QString::fromStdString(normal.error().message);
+    } else if (request.kind == BakeKind::Occlusion || request.kind == BakeKind::BentNormal) {
+        const OcclusionOutputs outputs = request.kind == BakeKind::Occlusion
+                                             ? OcclusionOutputs::AmbientOcclusion
+                                             : OcclusionOutputs::Both;
+        Result<OcclusionMaps> maps = bakeOcclusion(field, request.occlusion, outputs, control);
+        if (maps) {
+            outcome.occlusion = std::move(maps->occlusion);
+            outcome.bentNormals = std::move(maps->bentNormals);
+        } else if (isCancelled(maps.error())) {
+            outcome.cancelled = true;
+        } else {
+            outcome.error = QString::fromStdString(maps.error().message);
+        }
     } else {
         const ConeKind kind =
             request.kind == BakeKind::Cone ? ConeKind::Conservative : ConeKind::Relaxed;
@@ -155,7 +172,7 @@ void BakeRunner::next() {
     // Cone bakes go where BakeDevice.h says; on the GPU in a context sharing the viewports' (a
     // surface for the worker's is made here, on the GUI thread, as Qt requires).
     std::shared_ptr<QOffscreenSurface> surface;
-    if (kind != BakeKind::Normal) {
+    if (kind == BakeKind::Cone || kind == BakeKind::RelaxedCone) {
         const bool shared = QOpenGLContext::globalShareContext() != nullptr;
         request.device = chooseBakeDevice(m_preference, probeOpenGl().renderer, shared);
         if (request.device.gpu)

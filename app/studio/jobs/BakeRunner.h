@@ -1,6 +1,6 @@
 #pragma once
-// Runs the bakers (normal, cone, relaxed cone) on a worker thread, one at a time in the order
-// asked, with progress and cancellation: the UI never waits for a bake. Cone bakes run on the
+// Runs the bakers (normal, cone, relaxed cone, occlusion) on a worker thread, one at a time in the
+// order asked, with progress and cancellation: the UI never waits for a bake. Cone bakes run on the
 // device BakeDevice.h chooses: the GPU (GpuConeBake.h) where it is a GPU and a context can share
 // the viewports', the CPU where the renderer is a software rasteriser, or the artist's choice. The
 // result comes back on the GUI thread together with the maps it was baked from, so the caller can
@@ -9,6 +9,7 @@
 #include "jobs/BakeDevice.h"
 #include "parallax/bake/ConeMap.h"
 #include "parallax/bake/NormalMapBaker.h"
+#include "parallax/bake/OcclusionBaker.h"
 #include "parallax/material/MaterialAssets.h"
 
 #include <QFutureWatcher>
@@ -24,8 +25,11 @@ namespace px::studio {
 
 class BackgroundArena;
 
-enum class BakeKind { Normal, Cone, RelaxedCone };
-QString bakeTitle(BakeKind kind); // "normal map", "cone map", "relaxed cone map"
+// Occlusion fills the occlusion map; BentNormal bakes the bent normals (and the occlusion map
+// from the same horizons) for saving to a file: the material has no slot for them.
+enum class BakeKind { Normal, Cone, RelaxedCone, Occlusion, BentNormal };
+// "normal map", "cone map", "relaxed cone map", "ambient occlusion map", "bent normal map"
+QString bakeTitle(BakeKind kind);
 
 struct BakeRequest {
     BakeKind kind = BakeKind::Cone;
@@ -33,15 +37,18 @@ struct BakeRequest {
     std::chrono::steady_clock::time_point asked;
     std::shared_ptr<const MaterialAssets> source; // its height map is baked
     WrapMode wrap = WrapMode::Repeat;
-    NormalBakeOptions normal; // for BakeKind::Normal
-    BakeDeviceChoice device;  // cone bakes: where, and why (BakeRunner::start decides)
+    NormalBakeOptions normal;       // for BakeKind::Normal
+    BakeDeviceChoice device;        // cone bakes: where, and why (BakeRunner::start decides)
+    OcclusionBakeOptions occlusion; // for BakeKind::Occlusion and BentNormal
 };
 
 struct BakeOutcome {
     BakeRequest request;
-    Image normal;  // BakeKind::Normal
-    ConeMap cone;  // BakeKind::Cone and RelaxedCone
-    QString error; // empty on success
+    Image normal;      // BakeKind::Normal
+    ConeMap cone;      // BakeKind::Cone and RelaxedCone
+    Image occlusion;   // BakeKind::Occlusion and BentNormal
+    Image bentNormals; // BakeKind::BentNormal
+    QString error;     // empty on success
     bool cancelled = false;
     double seconds = 0.0; // the bake itself, on its thread
     int threadNice = 0;   // the bake's thread's nice value while it baked (BackgroundPriority.h)

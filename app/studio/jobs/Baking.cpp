@@ -2,6 +2,7 @@
 
 #include <QObject>
 #include <QStringList>
+#include <cmath>
 
 namespace px::studio {
 
@@ -13,11 +14,15 @@ MapKind mapKindOf(BakeKind kind) {
         return MapKind::Cone;
     case BakeKind::RelaxedCone:
         return MapKind::RelaxedCone;
+    case BakeKind::Occlusion:
+    case BakeKind::BentNormal:
+        return MapKind::Ao;
     }
     return MapKind::Cone;
 }
 
-BakeRequest makeBakeRequest(const DocumentState& state, BakeKind kind, NormalFilter filter) {
+BakeRequest makeBakeRequest(const DocumentState& state, BakeKind kind, NormalFilter filter,
+                            double occlusionDistance) {
     BakeRequest request;
     request.kind = kind;
     request.source = state.assets;
@@ -26,6 +31,10 @@ BakeRequest makeBakeRequest(const DocumentState& state, BakeKind kind, NormalFil
     request.normal.filter = filter;
     request.normal.wrap = state.material.wrap;
     request.normal.green = state.material.normalGreen;
+    request.occlusion.heightScale = state.material.heightScale;
+    request.occlusion.wrap = state.material.wrap;
+    request.occlusion.distance = occlusionDistance;
+    request.occlusion.green = state.material.normalGreen;
     return request;
 }
 
@@ -45,6 +54,11 @@ Result<DocumentState> withBake(const DocumentState& state, const BakeOutcome& ou
     if (request.kind == BakeKind::Normal &&
         request.normal.heightScale != state.material.heightScale)
         return Error{"The height scale changed while the normal map was baking; bake it again."};
+    const bool occlusion =
+        request.kind == BakeKind::Occlusion || request.kind == BakeKind::BentNormal;
+    if (occlusion && request.occlusion.heightScale != state.material.heightScale)
+        return Error{"The height scale changed while the " + bakeTitle(request.kind).toStdString() +
+                     " was baking; bake it again."};
 
     DocumentState next = state;
     auto assets = std::make_shared<MaterialAssets>(*state.assets);
@@ -62,11 +76,47 @@ Result<DocumentState> withBake(const DocumentState& state, const BakeOutcome& ou
     case BakeKind::RelaxedCone:
         assets->relaxedCone = outcome.cone;
         break;
+    case BakeKind::Occlusion:
+    case BakeKind::BentNormal:
+        assets->ao = outcome.occlusion;
+        next.material.surface.ao = HeightChannel::Red; // one grey channel, saved as such
+        next.occlusionBake =
+            OcclusionBake{request.occlusion.heightScale, request.occlusion.wrap,
+                          request.occlusion.distance, occlusionDirections(request.occlusion)};
+        break;
     }
     next.assets = std::move(assets);
     mapPath(next.material.maps, kind).clear();
     next.setUnsaved(kind, true);
     return next;
+}
+
+QString occlusionBakeSummary(const DocumentState& state) {
+    if (!state.occlusionBake || !state.hasMap(MapKind::Ao))
+        return {};
+    const OcclusionBake& bake = *state.occlusionBake;
+    const QString distance = std::isfinite(bake.distance)
+                                 ? QObject::tr("distance %1 uv").arg(bake.distance, 0, 'g', 4)
+                                 : QObject::tr("distance unlimited");
+    return QObject::tr("baked here: %1, %2 directions").arg(distance).arg(bake.directions);
+}
+
+QString staleOcclusionBake(const DocumentState& state) {
+    if (!state.occlusionBake || !state.hasMap(MapKind::Ao))
+        return {};
+    const OcclusionBake& bake = *state.occlusionBake;
+    QStringList reasons;
+    if (bake.heightScale != state.material.heightScale)
+        reasons << QObject::tr("baked at height scale %1, now %2")
+                       .arg(bake.heightScale, 0, 'g', 4)
+                       .arg(state.material.heightScale, 0, 'g', 4);
+    if (bake.wrap != state.material.wrap)
+        reasons << QObject::tr("baked with wrap %1, now %2")
+                       .arg(QString::fromUtf8(toString(bake.wrap).data()),
+                            QString::fromUtf8(toString(state.material.wrap).data()));
+    if (reasons.isEmpty())
+        return {};
+    return QObject::tr("Out of date: %1. Bake it again.").arg(reasons.join(QStringLiteral("; ")));
 }
 
 QString staleNormalBake(const DocumentState& state, NormalFilter filter) {

@@ -21,6 +21,15 @@ struct NormalBake {
     NormalFilter filter = NormalFilter::Sobel;
 };
 
+// How the occlusion map in memory was baked here (parallax/bake/OcclusionBaker.h): it describes
+// the surface at that height scale and wrap.
+struct OcclusionBake {
+    float heightScale = 0.05f;
+    WrapMode wrap = WrapMode::Repeat;
+    double distance = 0.0; // horizontal uv; +inf: unlimited
+    int directions = 0;    // azimuths the bake used
+};
+
 // What one viewport traces with. Viewport 1's is the material's own (technique and params).
 struct ViewQuality {
     Technique technique = Technique::Pom;
@@ -43,6 +52,8 @@ struct DocumentState {
     std::array<bool, kAllMapKinds.size()> unsaved{};
     // Set while the normal map is one baked here (not a loaded file).
     std::optional<NormalBake> normalBake;
+    // Set while the occlusion map is one baked here.
+    std::optional<OcclusionBake> occlusionBake;
     // Viewports 2..4 (index 0 is unused: viewport 1 shows the material's technique).
     std::array<ViewQuality, kMaxViewports> views = defaultComparisonViews();
 

@@ -86,6 +86,10 @@ void clearMap(MaterialAssets& assets, DocumentState& state, MapKind kind) {
         assets.normal = {};
         state.normalBake.reset();
         break;
+    case MapKind::Ao:
+        assets.ao = {};
+        state.occlusionBake.reset();
+        break;
     default:
         break;
     }
@@ -217,6 +221,8 @@ Result<Loaded> loadMapFile(const DocumentState& state, MapKind kind, const std::
                                       : next.material.surface.metallic) = HeightChannel::Red;
         if (kind == MapKind::Roughness)
             next.material.surface.gloss = false;
+        if (kind == MapKind::Ao)
+            next.occlusionBake.reset();
         break;
     }
     }

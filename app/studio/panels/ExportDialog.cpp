@@ -1,10 +1,12 @@
 #include "panels/ExportDialog.h"
 
 #include "widgets/FileDialogs.h"
+#include "widgets/OcclusionDistanceBox.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -55,6 +57,13 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
     m_force = new QCheckBox(tr("Replace a previous export in this folder"), this);
     m_force->setToolTip(tr("Only a folder that is empty or that an export wrote is replaced, "
                            "never a folder of other files."));
+    m_bakeOcclusion = new QCheckBox(tr("Bake ambient occlusion where the material has none"), this);
+    m_bakeOcclusion->setToolTip(tr("Bake an occlusion map from the height map for the formats "
+                                   "that have a slot for one (glTF, Godot, Unreal, Unity, the "
+                                   "package); a loaded or baked occlusion map goes out as it is."));
+    m_occlusionDistance = makeOcclusionDistanceBox(this);
+    m_occlusionDistance->setEnabled(false);
+    connect(m_bakeOcclusion, &QCheckBox::toggled, m_occlusionDistance, &QWidget::setEnabled);
     m_result = new QLabel(this);
     m_result->setObjectName(QStringLiteral("export-result"));
     m_result->setWordWrap(true);
@@ -77,6 +86,8 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
     form->addRow(tr("Normal map"), m_normal);
     form->addRow(tr("Package normal green"), m_green);
     form->addRow(QString(), m_force);
+    form->addRow(QString(), m_bakeOcclusion);
+    form->addRow(tr("Occlusion distance"), m_occlusionDistance);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     m_export = buttons->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
     auto* layout = new QVBoxLayout(this);
@@ -138,6 +149,8 @@ ExportOptions ExportDialog::options() const {
     o.heightFormat = static_cast<PixelFormat>(m_height->currentData().toInt());
     o.normalFormat = static_cast<PixelFormat>(m_normal->currentData().toInt());
     o.packageGreen = static_cast<NormalGreen>(m_green->currentData().toInt());
+    o.bakeOcclusion = m_bakeOcclusion->isChecked();
+    o.occlusionDistance = occlusionDistanceOf(m_occlusionDistance);
     return o;
 }
 

@@ -10,6 +10,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -28,6 +29,7 @@ public:
     QString resultText() const;
     // The result's scroll area: every note is in it, in view or a scroll away (tests).
     QScrollArea* resultArea() const { return m_resultArea; }
+    QCheckBox* bakeOcclusionBox() const { return m_bakeOcclusion; }
     bool isRunning() const { return m_watcher.isRunning(); }
 
 signals:
@@ -44,6 +46,8 @@ private:
     QCheckBox* m_force;
     void showResult(const QString& text);
 
+    QCheckBox* m_bakeOcclusion;
+    QDoubleSpinBox* m_occlusionDistance;
     QLabel* m_result;
     QScrollArea* m_resultArea;
     QPushButton* m_export;

@@ -1,5 +1,6 @@
 #include "panels/MapRow.h"
 
+#include "jobs/Baking.h"
 #include "model/DocumentState.h"
 #include "widgets/ImageConvert.h"
 
@@ -125,6 +126,9 @@ MapRow::MapRow(MapKind kind, bool bakeable, QWidget* parent) : QWidget(parent), 
             : kind == MapKind::Cone
                 ? tr("Bake a conservative cone map (no point of the bilinear surface inside any "
                      "cone) for cone step mapping.")
+            : kind == MapKind::Ao
+                ? tr("Bake the ambient occlusion of the height map at the material's height "
+                     "scale, out to the occlusion distance (Baking, below).")
                 : tr("Bake a relaxed cone map for relaxed cone stepping."));
         layout->addWidget(m_bake);
         connect(m_bake, &QToolButton::clicked, this, [this] { emit bakeRequested(m_kind); });
@@ -188,6 +192,9 @@ void MapRow::refresh(const DocumentState& state) {
         source = tr("made here, not saved yet");
     else
         source = QFileInfo(QString::fromStdString(path)).fileName();
+    if (const QString baked = m_kind == MapKind::Ao ? occlusionBakeSummary(state) : QString();
+        !baked.isEmpty())
+        source += QStringLiteral(" · ") + baked;
     if (present && m_kind == MapKind::Height) {
         const HeightField& h = state.assets->height;
         source += QStringLiteral(" · %1×%2").arg(h.width).arg(h.height);

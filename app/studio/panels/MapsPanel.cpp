@@ -3,8 +3,10 @@
 #include "jobs/Baking.h"
 #include "model/MaterialDocument.h"
 #include "panels/MapRow.h"
+#include "widgets/OcclusionDistanceBox.h"
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -20,8 +22,8 @@ MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* par
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     for (MapKind kind : kAllMapKinds) {
-        const bool bakeable =
-            kind == MapKind::Normal || kind == MapKind::Cone || kind == MapKind::RelaxedCone;
+        const bool bakeable = kind == MapKind::Normal || kind == MapKind::Cone ||
+                              kind == MapKind::RelaxedCone || kind == MapKind::Ao;
         auto* row = new MapRow(kind, bakeable, this);
         m_rows[kind] = row;
         layout->addWidget(row);
@@ -31,6 +33,7 @@ MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* par
         connect(row, &MapRow::bakeRequested, this, [this](MapKind k) {
             emit bakeRequested(k == MapKind::Normal ? BakeKind::Normal
                                : k == MapKind::Cone ? BakeKind::Cone
+                               : k == MapKind::Ao   ? BakeKind::Occlusion
                                                     : BakeKind::RelaxedCone);
         });
     }
@@ -51,6 +54,8 @@ MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* par
     connect(m_filter, &QComboBox::currentIndexChanged, this, &MapsPanel::refresh);
     auto* form = new QFormLayout;
     form->addRow(tr("Normal filter"), m_filter);
+    m_occlusionDistance = makeOcclusionDistanceBox(this);
+    form->addRow(tr("Occlusion distance"), m_occlusionDistance);
     m_bakeLabel = new QLabel(tr("No bake running."), this);
     m_bakeLabel->setObjectName(QStringLiteral("bake-status"));
     // A long line ("Baked the relaxed cone map in 7.2 s on the CPU (the GPU, llvmpipe (LLVM 15.0.6,
@@ -123,6 +128,10 @@ void MapsPanel::showBakeShown(BakeKind kind, double bakeSeconds, const QString& 
                       .arg(shownSeconds, 0, 'f', 2));
 }
 
+double MapsPanel::occlusionDistance() const {
+    return occlusionDistanceOf(m_occlusionDistance);
+}
+
 NormalFilter MapsPanel::normalFilter() const {
     return parseNormalFilter(m_filter->currentText().toStdString()).value_or(NormalFilter::Sobel);
 }
@@ -146,6 +155,7 @@ void MapsPanel::clearMap(MapKind kind) {
                              break;
                          case MapKind::Ao:
                              assets->ao = {};
+                             s.occlusionBake.reset();
                              break;
                          case MapKind::Roughness:
                              assets->roughness = {};
@@ -183,6 +193,7 @@ void MapsPanel::refresh() {
         row->setBakeEnabled(height && !m_baker->isBusy());
     }
     m_rows.at(MapKind::Normal)->setWarning(staleNormalBake(s, normalFilter()));
+    m_rows.at(MapKind::Ao)->setWarning(staleOcclusionBake(s));
 }
 
 } // namespace px::studio

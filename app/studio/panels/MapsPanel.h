@@ -9,6 +9,7 @@
 #include <map>
 
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -33,6 +34,8 @@ public:
     void showBakeShown(BakeKind kind, double bakeSeconds, const QString& device,
                        double shownSeconds);
     NormalFilter normalFilter() const;
+    double occlusionDistance() const; // +inf: unlimited
+    QDoubleSpinBox* occlusionDistanceBox() const { return m_occlusionDistance; }
 
 signals:
     void loadRequested(px::MapKind kind);
@@ -48,6 +51,7 @@ private:
     BakeRunner* m_baker;
     std::map<MapKind, MapRow*> m_rows;
     QComboBox* m_filter;
+    QDoubleSpinBox* m_occlusionDistance;
     QLabel* m_bakeLabel;
     QProgressBar* m_progress;
     QPushButton* m_cancel;

@@ -275,7 +275,8 @@ void MainWindow::startBake(BakeKind kind) {
 }
 
 void MainWindow::runBake(BakeKind kind) {
-    m_baker->start(makeBakeRequest(m_document->state(), kind, m_mapsPanel->normalFilter()));
+    m_baker->start(makeBakeRequest(m_document->state(), kind, m_mapsPanel->normalFilter(),
+                                   m_mapsPanel->occlusionDistance()));
     statusBar()->showMessage(
         tr("Baking the %1 in the background (Esc cancels)…").arg(bakeTitle(kind)));
 }
@@ -296,6 +297,8 @@ void MainWindow::onBakeFinished(const BakeOutcome& outcome) {
         return;
     }
     m_document->edit(tr("Bake %1").arg(what), [&](DocumentState& s) { s = *next; });
+    if (outcome.request.kind == BakeKind::BentNormal)
+        saveBentNormals(outcome.bentNormals);
     // The wait the user sees runs from Bake to the views drawing the map, and can be much longer
     // than the bake: a baked normal map takes 0.05 s at 512², the views' new shader variant a
     // second on llvmpipe. Said once the active view has drawn it (with the new maps, not while

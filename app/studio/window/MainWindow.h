@@ -170,6 +170,7 @@ private:
     void bakeFromMeshDialog();
     SharedBakeMesh readMeshForBake(const QString& path, MeshUp up);
     void onBakeFinished(const BakeOutcome& outcome);
+    void saveBentNormals(const Image& bentNormals); // MainWindowBentNormals.cpp
     void bakeMissingConeMaps();
 
     MaterialDocument* m_document;

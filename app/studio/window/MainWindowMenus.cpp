@@ -222,7 +222,9 @@ void MainWindow::createMenus() {
     const std::pair<BakeKind, QKeySequence> bakes[] = {
         {BakeKind::Normal, QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_N)},
         {BakeKind::Cone, QKeySequence(Qt::CTRL | Qt::Key_B)},
-        {BakeKind::RelaxedCone, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B)}};
+        {BakeKind::RelaxedCone, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B)},
+        {BakeKind::Occlusion, QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_O)},
+        {BakeKind::BentNormal, QKeySequence()}};
     for (const auto& [kind, key] : bakes) {
         const QString title = bakeTitle(kind);
         QAction* a = action(this, tr("Bake %1").arg(title.left(1).toUpper() + title.mid(1)), key,

@@ -33,6 +33,7 @@ Result<Image> rayMarchOcclusion(const HeightField& field, const PeerSurfaceOptio
     const peers::PeerSurface surface(field, surfaceOptions);
     const double step = o.stepTexels / std::max(field.width, field.height); // uv
     const double reach = std::min(o.distance, 4.0);
+    const auto steps = static_cast<int>(std::floor(reach / step));
     return peers::everyTexel(surface, control, [&](int i, int j) {
         const glm::dvec3 n = surface.normal(i, j);
         // A frame about n.
@@ -55,7 +56,8 @@ Result<Image> rayMarchOcclusion(const HeightField& field, const PeerSurfaceOptio
             bool blocked = false;
             if (across > 1e-12) {
                 const double rise = w.z / across, phi = std::atan2(w.y, w.x);
-                for (double r = step; r <= reach; r += step) {
+                for (int k = 1; k <= steps; ++k) {
+                    const double r = k * step; // not summed: no drift over long rays
                     const double zRay = z0 + r * rise;
                     if (zRay > surface.highest())
                         break;
