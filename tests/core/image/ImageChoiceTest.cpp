@@ -78,7 +78,7 @@ void ImageChoiceTest::multiPageTiff() {
     for (int p = 0; p < count; ++p)
         QVERIFY2(
             said.contains(
-                QString("%1 (%2x%3, 1 channels)").arg(p).arg(specs[p].width).arg(specs[p].height)),
+                QString("%1 (%2x%3, 1 channel)").arg(p).arg(specs[p].width).arg(specs[p].height)),
             qPrintable(said));
     QVERIFY2(said.contains("--page"), qPrintable(said));
 
@@ -128,7 +128,7 @@ void ImageChoiceTest::multiPartExr() {
     const QString said = messageOf(unchosen);
     QVERIFY2(said.startsWith(
                  QString::fromStdString(file) +
-                 ": the file holds 2 parts: albedo (17x9, 3 channels), height (23x11, 1 channels)"),
+                 ": the file holds 2 parts: albedo (17x9, 3 channels), height (23x11, 1 channel)"),
              qPrintable(said));
     ImageReadOptions byName;
     byName.layer = "height";

@@ -111,7 +111,8 @@ public:
             std::string text;
             for (std::size_t s = 0; s < subimages.size(); ++s)
                 text += (s ? ", " : "") + nameOf(s) + " (" + sizeOf(subimages[s]) + ", " +
-                        std::to_string(subimages[s].nchannels) + " channels)";
+                        std::to_string(subimages[s].nchannels) +
+                        (subimages[s].nchannels == 1 ? " channel)" : " channels)");
             return text;
         };
         if (subimages.empty())
