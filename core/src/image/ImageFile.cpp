@@ -145,9 +145,9 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
     source.layer = options.layer;
     source.page = options.page;
     if (source.format.empty())
-        return fileError(path, "not an image file this tool can read (its first bytes are no "
-                               "signature of PNG, JPEG, TIFF, OpenEXR, Radiance HDR, BMP, Targa, "
-                               "PNM, SGI, DDS, PSD, GIF, WebP or the other formats listed in "
+        return fileError(path, "not a readable image (its first bytes are the signature of no "
+                               "format this tool reads: PNG, JPEG, TIFF, OpenEXR, Radiance HDR, "
+                               "BMP, Targa, PNM, SGI, DDS, PSD, GIF, WebP and the others in "
                                "docs/image-files.md)");
 
     // Formats whose header the core reads itself are bounded before any decoder opens them.

@@ -141,11 +141,20 @@ void ImageDamageTest::truncatedFilesRefused() {
     const Result<std::string> bytes = readTextFile(whole);
     QVERIFY(bytes.ok());
     QVERIFY2(readImage(whole).ok(), qPrintable(QString("seed %1: the whole file").arg(seed)));
+    // Where the texels end: a Targa 2.0's extension area and footer after them are optional, so
+    // a file cut there is whole.
+    std::size_t end = bytes->size();
+    const std::string footer("TRUEVISION-XFILE.\0", 18);
+    if (end > 26 && bytes->compare(end - 18, 18, footer) == 0) {
+        const auto* f = reinterpret_cast<const unsigned char*>(bytes->data() + end - 26);
+        const std::size_t extension =
+            f[0] | f[1] << 8 | f[2] << 16 | static_cast<std::size_t>(f[3]) << 24;
+        end = extension > 0 ? extension : end - 26;
+    }
     // Cut at three seeded points: in the first third (the case), the middle, near the end.
     for (const double from : {0.2, 0.4, 0.9}) {
         const double fraction = from + 0.1 * std::uniform_real_distribution<double>(0, 1)(rng);
-        const std::size_t keep =
-            static_cast<std::size_t>(static_cast<double>(bytes->size()) * fraction);
+        const std::size_t keep = static_cast<std::size_t>(static_cast<double>(end) * fraction);
         const std::string file = path(name);
         QVERIFY(writeFileAtomically(file, bytes->substr(0, keep)).ok());
         const Result<Image> image = readImage(file);
@@ -186,7 +195,8 @@ void ImageDamageTest::contentDecidesTheFormat() {
     const Result<Image> text = readImage(path("notes.png"));
     QVERIFY(!text.ok());
     QVERIFY2(QString::fromStdString(text.error().message)
-                 .startsWith(QString::fromStdString(path("notes.png")) + ": not an image file"),
+                 .startsWith(QString::fromStdString(path("notes.png")) +
+                             ": not a readable image (its first bytes"),
              text.error().message.c_str());
 }
 
