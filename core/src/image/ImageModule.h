@@ -23,7 +23,7 @@ struct ImageModule {
     const char* version; // the project version it was built as (Version.h)
     // A decoder of the source's bytes (never its path): an error lists the pages, parts or
     // layers when the file has several and the source chooses none, or not one of them.
-    Result<std::unique_ptr<ImageDecoder>> (*open)(ImageSource source);
+    Result<std::unique_ptr<ImageDecoder>> (*open)(const ImageSource& source);
     // The file's bytes, encoded for the format `path`'s extension names.
     Result<std::vector<unsigned char>> (*encode)(const std::string& path, const Image& image,
                                                  const ImageWriteOptions& options);

@@ -225,7 +225,7 @@ private:
     int m_subimage = 0, m_chBegin = 0, m_chEnd = 0;
 };
 
-Result<std::unique_ptr<ImageDecoder>> open(ImageSource source) {
+Result<std::unique_ptr<ImageDecoder>> open(const ImageSource& source) {
     auto input = OIIO::ImageInput::create(source.format);
     if (!input)
         return Error{"no reader for its format (" + source.format + ") in this build (" +
