@@ -69,13 +69,19 @@ void checkNumbers(CLI::App& app) {
 }
 
 void HeightOptions::addTo(CLI::App& command, bool required) {
-    auto* height =
-        command.add_option("--height", file, "Height map (PNG, TIFF, EXR, BMP, JPEG, TGA)");
+    auto* height = command.add_option(
+        "--height", file,
+        "Height map (PNG, TIFF, EXR, BMP, JPEG, TGA, HDR, ...: docs/image-files.md)");
     if (required)
         height->required();
     command.add_flag("--invert", invert, "The file is a depth map (white = deep)");
     command.add_flag("--normalize", normalize, "Remap the map's [min, max] to [0, 1]");
     command.add_flag("--allow-large", allowLarge, "Accept maps with a side over 16384 texels");
+    command.add_option("--layer", layer,
+                       "The part or layer of a multi-part or layered EXR to read the height from");
+    command
+        .add_option("--page", page, "The page of a multi-page TIFF (or EXR part) to read, from 0")
+        ->check(CLI::NonNegativeNumber);
     command.add_option("--channel", channel, "Channel holding the height")
         ->check(CLI::IsMember(choices(heightChannelNames())));
     command.add_option("--wrap", wrap, "Wrap mode of the material")
@@ -92,6 +98,8 @@ Result<HeightField> HeightOptions::load() const {
     options.invert = invert;
     options.normalize = normalize;
     options.allowLarge = allowLarge;
+    options.layer = layer;
+    options.page = page;
     return loadHeightField(file, options);
 }
 

@@ -36,10 +36,12 @@ struct HeightOptions {
     bool invert = false;
     bool normalize = false;
     bool allowLarge = false;
+    std::string layer; // of a multi-part or layered EXR
+    int page = -1;     // of a multi-page TIFF (or an EXR's part by number)
     std::string channel = "red";
     std::string wrap = "repeat";
 
-    // Adds --height, --invert, --normalize, --allow-large, --channel, --wrap.
+    // Adds --height, --invert, --normalize, --allow-large, --layer, --page, --channel, --wrap.
     void addTo(CLI::App& command, bool required = true);
     WrapMode wrapMode() const;
     Result<HeightField> load() const;

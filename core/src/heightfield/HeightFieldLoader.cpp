@@ -177,6 +177,8 @@ Result<FittedHeight> fitHeightField(Image image, const HeightLoadOptions& option
 Result<HeightField> loadHeightField(const std::string& path, const HeightLoadOptions& options) {
     ImageReadOptions read;
     read.maxSide = options.allowLarge ? (1 << 30) : 16384;
+    read.layer = options.layer;
+    read.page = options.page;
     Result<Image> image = readImage(path, read);
     if (!image)
         return image.error();
@@ -187,6 +189,8 @@ Result<FittedHeight> loadHeightFieldFitted(const std::string& path,
                                            const HeightLoadOptions& options) {
     ImageReadOptions read;
     read.maxSide = options.allowLarge ? (1 << 30) : 16384;
+    read.layer = options.layer;
+    read.page = options.page;
     Result<Image> image = readImage(path, read);
     if (!image)
         return image.error();

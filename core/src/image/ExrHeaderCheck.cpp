@@ -1,9 +1,10 @@
 #include "ExrHeaderCheck.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
-#include <fstream>
 #include <optional>
+#include <string_view>
 
 namespace px {
 namespace {
@@ -14,38 +15,39 @@ constexpr int kMaxNameLength = 255; // with the long-names flag; shorter names a
 
 class HeaderReader {
 public:
-    HeaderReader(std::ifstream& in, std::int64_t fileSize) : in_(in), fileSize_(fileSize) {}
+    explicit HeaderReader(std::string_view bytes) : m_bytes(bytes) {}
 
-    std::int64_t remaining() { return fileSize_ - static_cast<std::int64_t>(in_.tellg()); }
+    std::int64_t remaining() const { return static_cast<std::int64_t>(m_bytes.size() - m_at); }
 
     // A NUL-terminated string; nullopt at end of file or when no NUL comes within the limit.
     std::optional<std::string> string() {
         std::string text;
         for (int i = 0; i <= kMaxNameLength; ++i) {
-            const int c = in_.get();
-            if (c == std::char_traits<char>::eof())
+            if (m_at >= m_bytes.size())
                 return std::nullopt;
+            const char c = m_bytes[m_at++];
             if (c == 0)
                 return text;
-            text.push_back(static_cast<char>(c));
+            text.push_back(c);
         }
         return std::nullopt;
     }
 
     std::optional<std::int32_t> int32() {
-        std::array<unsigned char, 4> bytes{};
-        if (!in_.read(reinterpret_cast<char*>(bytes.data()), bytes.size()))
+        if (remaining() < 4)
             return std::nullopt;
-        const std::uint32_t value = bytes[0] | (bytes[1] << 8U) | (bytes[2] << 16U) |
-                                    (static_cast<std::uint32_t>(bytes[3]) << 24U);
+        std::uint32_t value = 0;
+        for (int i = 3; i >= 0; --i)
+            value = value << 8U | static_cast<unsigned char>(m_bytes[m_at + i]);
+        m_at += 4;
         return static_cast<std::int32_t>(value);
     }
 
-    void skip(std::int32_t bytes) { in_.seekg(bytes, std::ios::cur); }
+    void skip(std::int32_t bytes) { m_at += static_cast<std::size_t>(bytes); }
 
 private:
-    std::ifstream& in_;
-    std::int64_t fileSize_;
+    std::string_view m_bytes;
+    std::size_t m_at = 4; // past the magic number
 };
 
 // One header: attributes until an empty name. Returns false (with the error) on a bad one and sets
@@ -76,16 +78,12 @@ Status checkOneHeader(const std::string& path, HeaderReader& reader, bool& empty
 
 } // namespace
 
-Status checkExrHeader(const std::string& path) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in)
-        return success(); // unreadable files get OpenImageIO's own message
-    const std::int64_t fileSize = static_cast<std::int64_t>(in.tellg());
-    in.seekg(0);
-    std::array<unsigned char, 4> magic{};
-    if (!in.read(reinterpret_cast<char*>(magic.data()), magic.size()) || magic != kExrMagic)
+Status checkExrHeader(const std::string& path, std::string_view bytes) {
+    if (bytes.size() < kExrMagic.size() ||
+        !std::equal(kExrMagic.begin(), kExrMagic.end(),
+                    reinterpret_cast<const unsigned char*>(bytes.data())))
         return success();
-    HeaderReader reader(in, fileSize);
+    HeaderReader reader(bytes);
     const std::optional<std::int32_t> version = reader.int32();
     if (!version)
         return fileError(path, "the OpenEXR header is truncated");

@@ -1,14 +1,19 @@
 #include "parallax/image/ImageFile.h"
 
 #include "ExrHeaderCheck.h"
+#include "FileSizeBound.h"
 #include "ImageBudget.h"
+#include "ImageFormat.h"
 #include "ImageModule.h"
+#include "JpegCheck.h"
+#include "Orientation.h"
 #include "PngCheck.h"
 #include "PngCodec.h"
 #include "parallax/io/AtomicWrite.h"
 #include "parallax/io/FileExtension.h"
 #include "parallax/io/Inputs.h"
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <new>
@@ -17,30 +22,45 @@
 namespace px {
 namespace {
 
-// PNG by the core's own codec, from the bytes read once through the input's descriptor (its
-// chunks checked first); anything else by the OpenImageIO module (loaded now if not yet).
-Result<std::unique_ptr<ImageDecoder>> openDecoder(const std::string& path, const InputFile& file) {
-    char magic[8] = {};
-    if (file.size() >= sizeof magic && file.readAt(0, magic, sizeof magic).ok() &&
-        hasPngSignature(std::string_view(magic, sizeof magic))) {
-        Result<std::string> bytes = file.readAll(file.size());
-        if (!bytes)
-            return bytes.error();
-        if (Status png = checkPngStructure(path, *bytes); !png)
+// PNG by the core's own codec, anything else by the OpenImageIO module (loaded now if not yet);
+// both from the bytes read once through the input's descriptor, the format as their signature
+// says, damage the format's own structure shows found first.
+Result<std::unique_ptr<ImageDecoder>> openDecoder(const ImageSource& source) {
+    const std::string& path = source.path;
+    const std::string& bytes = *source.bytes;
+    if (source.format == "png") {
+        if (Status png = checkPngStructure(path, bytes); !png)
             return png.error();
-        Result<std::unique_ptr<ImageDecoder>> decoder = openPng(std::move(*bytes));
+        if (source.page > 0 || !source.layer.empty())
+            return fileError(path, "a PNG holds one image, with no pages or layers to choose");
+        Result<std::unique_ptr<ImageDecoder>> decoder = openPng(source.bytes);
         if (!decoder)
             return fileError(path, decoder.error().message);
         return decoder;
     }
+    if (source.format == "jpeg") {
+        if (Status jpeg = checkJpegStructure(path, bytes); !jpeg)
+            return jpeg.error();
+    }
+    // Before OpenEXR, which allocates what a damaged header claims (fuzzing found 1.7 GB).
+    if (source.format == "openexr") {
+        if (Status exr = checkExrHeader(path, bytes); !exr)
+            return exr.error();
+    }
     Result<const ImageModule*> module = imageModule();
     if (!module)
         return fileError(path, module.error().message);
-    Result<std::unique_ptr<ImageDecoder>> decoder = (*module)->open(path);
+    Result<std::unique_ptr<ImageDecoder>> decoder = (*module)->open(source);
     if (!decoder)
         return fileError(path, decoder.error().message);
     return decoder;
 }
+
+void printNote(const std::string& note) {
+    std::fprintf(stderr, "note: %s\n", note.c_str());
+}
+
+std::atomic<ImageNoteSink> g_noteSink{printNote};
 
 Result<std::vector<unsigned char>> encodeFor(const std::string& path, const Image& image,
                                              const ImageWriteOptions& options) {
@@ -102,22 +122,48 @@ ImageReadOptions colourMapReading() {
     return read;
 }
 
+void setImageNoteSink(ImageNoteSink sink) {
+    g_noteSink = sink ? sink : printNote;
+}
+
 Result<Image> readImage(const std::string& path, const ImageReadOptions& options) {
     // Opened first without blocking: a FIFO or a device is refused by name, never waited on, and
-    // the file is recorded as an input of the run (Inputs.h) before anything reads it.
+    // the file is recorded as an input of the run (Inputs.h); then read once, whole, through that
+    // descriptor: no decoder opens the path again.
     Result<InputFile> file = InputFile::open(path);
     if (!file)
         return file.error();
     if (file->size() == 0)
         return fileError(path, "the file is empty (0 bytes)");
-    // Before OpenEXR, which allocates what a damaged header claims (fuzzing found 1.7 GB).
-    if (Status exr = checkExrHeader(path); !exr)
-        return exr.error();
+    Result<std::string> content = file->readAll(file->size());
+    if (!content)
+        return content.error();
+    ImageSource source;
+    source.path = path;
+    source.bytes = std::make_shared<const std::string>(std::move(*content));
+    source.format = imageFormatOf(*source.bytes, path);
+    source.layer = options.layer;
+    source.page = options.page;
+    if (source.format.empty())
+        return fileError(path, "not a readable image (its first bytes are the signature of no "
+                               "format this tool reads: PNG, JPEG, TIFF, OpenEXR, Radiance HDR, "
+                               "BMP, Targa, PNM, SGI, DDS, PSD, GIF, WebP and the others in "
+                               "docs/image-files.md)");
 
-    Result<std::unique_ptr<ImageDecoder>> decoder = openDecoder(path, *file);
+    // Formats whose header the core reads itself are bounded before any decoder opens them.
+    const std::int64_t fileBytes = static_cast<std::int64_t>(source.bytes->size());
+    const std::optional<StoredClaim> early = claimInHeader(*source.bytes, source.format);
+    if (early) {
+        if (Status fits =
+                checkImageClaim(path, {early->width, early->height, 1, early->minBytes, fileBytes});
+            !fits)
+            return fits.error();
+    }
+
+    Result<std::unique_ptr<ImageDecoder>> decoder = openDecoder(source);
     if (!decoder)
         return decoder.error();
-    const ImageHeader& header = (*decoder)->header();
+    const ImageHeader header = (*decoder)->header(); // a copy: the decoder goes before the checks
     if (header.width <= 0 || header.height <= 0 || header.channels <= 0)
         return fileError(path, "the image has zero size");
     if (header.depth > 1)
@@ -126,13 +172,8 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
         return fileError(path, "the image is " + std::to_string(header.width) + "x" +
                                    std::to_string(header.height) + ", larger than the limit of " +
                                    std::to_string(options.maxSide) + " texels a side");
-    ImageClaim claim{header.width,
-                     header.height,
-                     header.channels,
-                     header.bitsPerTexel,
-                     header.format,
-                     header.compression,
-                     static_cast<std::int64_t>(file->size())};
+    const ImageClaim claim{header.width, header.height, header.channels,
+                           early ? early->minBytes : minFileBytes(header), fileBytes};
     if (Status fits = checkImageClaim(path, claim); !fits)
         return fits.error();
 
@@ -140,13 +181,28 @@ Result<Image> readImage(const std::string& path, const ImageReadOptions& options
         Image image(header.width, header.height, header.channels);
         if (Status read = (*decoder)->read(image.pixels.data()); !read)
             return fileError(path, read.error().message);
+        decoder->reset(); // its copy of the file's bytes too
+        source.bytes.reset();
         image.alphaOnly = header.alphaOnly;
+        std::string note;
+        if (header.orientation > 1) {
+            image = upright(image, header.orientation);
+            note = path + ": " + orientationChange(header.orientation) + " to be upright, as " +
+                   (header.format == "hdr"
+                        ? "its resolution line (+Y, stored bottom-up)"
+                        : "its Orientation tag (" + std::to_string(header.orientation) + ")") +
+                   " says";
+        }
+        if (!header.chosen.empty())
+            note += (note.empty() ? path + ": read " : "; read ") + header.chosen;
         if (options.rejectNonFinite) {
             if (Status finite = checkFinite(path, image); !finite)
                 return finite.error();
         }
         if (Status s = checkMagnitude(path, image, options.maxMagnitude, options.limitReason); !s)
             return s.error();
+        if (!note.empty())
+            g_noteSink.load()(note);
         return image;
     } catch (const std::bad_alloc&) {
         return fileError(path, "not enough memory to read the " + std::to_string(header.width) +

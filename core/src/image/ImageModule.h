@@ -16,12 +16,14 @@
 namespace px {
 
 // Bumped with any change to ImageModule: a module of another build is refused, not called.
-constexpr int kImageModuleAbi = 1;
+constexpr int kImageModuleAbi = 2;
 
 struct ImageModule {
     int abi;
     const char* version; // the project version it was built as (Version.h)
-    Result<std::unique_ptr<ImageDecoder>> (*open)(const std::string& path);
+    // A decoder of the source's bytes (never its path): an error lists the pages, parts or
+    // layers when the file has several and the source chooses none, or not one of them.
+    Result<std::unique_ptr<ImageDecoder>> (*open)(const ImageSource& source);
     // The file's bytes, encoded for the format `path`'s extension names.
     Result<std::vector<unsigned char>> (*encode)(const std::string& path, const Image& image,
                                                  const ImageWriteOptions& options);

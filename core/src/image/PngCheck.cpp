@@ -1,32 +1,16 @@
 #include "PngCheck.h"
 
-#include <array>
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <zlib.h>
 
 namespace px {
 
 namespace {
 
 constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-
-std::uint32_t crc32(const unsigned char* data, std::size_t size) {
-    static const std::array<std::uint32_t, 256> table = [] {
-        std::array<std::uint32_t, 256> t{};
-        for (std::uint32_t n = 0; n < 256; ++n) {
-            std::uint32_t c = n;
-            for (int k = 0; k < 8; ++k)
-                c = (c & 1u) != 0 ? 0xedb88320u ^ (c >> 1) : c >> 1;
-            t[n] = c;
-        }
-        return t;
-    }();
-    std::uint32_t crc = 0xffffffffu;
-    for (std::size_t i = 0; i < size; ++i)
-        crc = table[(crc ^ data[i]) & 0xffu] ^ (crc >> 8);
-    return ~crc;
-}
 
 std::uint32_t big32(const unsigned char* p) {
     return static_cast<std::uint32_t>(p[0]) << 24 | static_cast<std::uint32_t>(p[1]) << 16 |
@@ -51,7 +35,7 @@ Status checkPngStructure(const std::string& path, std::string_view bytes) {
                                        " chunk runs past the end, "
                                        "at byte " +
                                        std::to_string(bytes.size()) + ")");
-        if (crc32(data + at + 4, length + 4) != big32(data + at + 8 + length))
+        if (::crc32(0, data + at + 4, length + 4) != big32(data + at + 8 + length))
             return fileError(path, "the file is damaged (its " + type +
                                        " chunk does not match its checksum)");
         if (type == "IEND")

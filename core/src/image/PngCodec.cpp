@@ -1,5 +1,7 @@
 #include "PngCodec.h"
 
+#include "PngDeflate.h"
+
 #include <algorithm>
 #include <cmath>
 #include <csetjmp>
@@ -19,21 +21,34 @@ void dropWarning(png_structp, png_const_charp) {}
 
 // libpng's reads, from the file's bytes in memory; past the end is libpng's error.
 struct MemorySource {
-    std::string bytes;
+    std::shared_ptr<const std::string> bytes;
     std::size_t at = 0;
 };
 
 void readBytes(png_structp png, png_bytep out, png_size_t size) {
     auto* source = static_cast<MemorySource*>(png_get_io_ptr(png));
-    if (size > source->bytes.size() - source->at)
+    if (size > source->bytes->size() - source->at)
         png_error(png, "the data ends early");
-    std::copy_n(source->bytes.data() + source->at, size, out);
+    std::copy_n(source->bytes->data() + source->at, size, out);
     source->at += size;
+}
+
+int storedChannels(int colour) {
+    switch (colour) {
+    case PNG_COLOR_TYPE_GRAY_ALPHA:
+        return 2;
+    case PNG_COLOR_TYPE_RGB:
+        return 3;
+    case PNG_COLOR_TYPE_RGB_ALPHA:
+        return 4;
+    default: // grey, palette
+        return 1;
+    }
 }
 
 class PngDecoder final : public ImageDecoder {
 public:
-    explicit PngDecoder(std::string bytes) : m_source{std::move(bytes), 0} {}
+    explicit PngDecoder(std::shared_ptr<const std::string> bytes) : m_source{std::move(bytes), 0} {}
     ~PngDecoder() override { png_destroy_read_struct(&m_png, &m_info, nullptr); }
 
     // False with m_message on libpng's error (no locals between setjmp and longjmp).
@@ -56,21 +71,29 @@ public:
             png_set_expand_gray_1_2_4_to_8(m_png);
         if (png_get_valid(m_png, m_info, PNG_INFO_tRNS) != 0)
             png_set_tRNS_to_alpha(m_png);
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
         if (stored == 16)
             png_set_swap(m_png); // big-endian in the file, native in memory
+#endif
         m_passes = png_set_interlace_handling(m_png);
         png_read_update_info(m_png, m_info);
         m_header.width = static_cast<int>(png_get_image_width(m_png, m_info));
         m_header.height = static_cast<int>(png_get_image_height(m_png, m_info));
         m_header.channels = png_get_channels(m_png, m_info);
-        m_header.bitsPerTexel = static_cast<std::int64_t>(stored) * m_header.channels;
+        // As stored, before expansion: a palette texel is one index of `stored` bits, whatever
+        // its colours and tRNS expand to.
+        m_header.bitsPerTexel = static_cast<std::int64_t>(stored) * storedChannels(colour);
         m_header.format = "png";
         m_bits = png_get_bit_depth(m_png, m_info);
         return true;
     }
 
-    const std::string& message() const { return m_message; }
-    const ImageHeader& header() const override { return m_header; }
+    const std::string& message() const {
+        return m_message;
+    }
+    const ImageHeader& header() const override {
+        return m_header;
+    }
 
     Status read(float* texels) override {
         const std::size_t rowValues = static_cast<std::size_t>(m_header.width) * m_header.channels;
@@ -148,12 +171,16 @@ template <typename T> T quantised(float value, double top) {
 struct PngEncode {
     std::string message;
     std::vector<unsigned char> bytes;
-    std::vector<png_byte> row;
 };
 
-// The whole file into encode.bytes; false with encode.message on libpng's error.
-bool encodeRows(png_structp png, png_infop info, const Image& image, bool sixteen, bool srgb,
-                PngEncode& encode) {
+// zlib's level for the image data, chosen by measurement (docs/platform.md): on a 2048² 16-bit
+// cone map 5 takes 2.2x less CPU than libpng's default 6 for a file 1.3% larger.
+constexpr int kPngLevel = 5;
+
+// The signature, IHDR and colour chunks into encode.bytes; false with encode.message on libpng's
+// error.
+bool encodeHeader(png_structp png, png_infop info, const Image& image, bool sixteen, bool srgb,
+                  PngEncode& encode) {
     if (setjmp(png_jmpbuf(png)) != 0)
         return false;
     static constexpr int kColour[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA,
@@ -166,29 +193,12 @@ bool encodeRows(png_structp png, png_infop info, const Image& image, bool sixtee
     if (srgb)
         png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_ABSOLUTE);
     png_write_info(png, info);
-    if (sixteen)
-        png_set_swap(png);
-    const std::size_t values = static_cast<std::size_t>(image.width) * image.channels;
-    encode.row.resize(values * (sixteen ? 2 : 1));
-    for (int y = 0; y < image.height; ++y) {
-        const float* source = image.pixels.data() + y * values;
-        if (sixteen) {
-            auto* out = reinterpret_cast<std::uint16_t*>(encode.row.data());
-            for (std::size_t i = 0; i < values; ++i)
-                out[i] = quantised<std::uint16_t>(source[i], 65535.0);
-        } else {
-            for (std::size_t i = 0; i < values; ++i)
-                encode.row[i] = quantised<png_byte>(source[i], 255.0);
-        }
-        png_write_row(png, encode.row.data());
-    }
-    png_write_end(png, nullptr);
     return true;
 }
 
 } // namespace
 
-Result<std::unique_ptr<ImageDecoder>> openPng(std::string bytes) {
+Result<std::unique_ptr<ImageDecoder>> openPng(std::shared_ptr<const std::string> bytes) {
     auto decoder = std::make_unique<PngDecoder>(std::move(bytes));
     if (!decoder->readInfo())
         return Error{"not a readable image (" + decoder->message() + ")"};
@@ -208,10 +218,33 @@ Result<std::vector<unsigned char>> encodePng(const Image& image, PixelFormat for
         png_destroy_write_struct(&png, nullptr);
         return Error{"not enough memory to encode the PNG"};
     }
-    const bool encoded = encodeRows(png, info, image, format == PixelFormat::UInt16, srgb, encode);
+    const bool sixteen = format == PixelFormat::UInt16;
+    const bool encoded = encodeHeader(png, info, image, sixteen, srgb, encode);
     png_destroy_write_struct(&png, &info);
     if (!encoded)
         return Error{"encoding failed (" + encode.message + ")"};
+    // The image data and IEND: rows filtered and deflated on every core (PngDeflate.h), not
+    // libpng's one thread.
+    const std::size_t values = static_cast<std::size_t>(image.width) * image.channels;
+    PngRows rows;
+    rows.width = image.width;
+    rows.height = image.height;
+    rows.bytesPerTexel = image.channels * (sixteen ? 2 : 1);
+    const float* texels = image.pixels.data();
+    rows.row = [&](int y, std::uint8_t* out) {
+        const float* source = texels + static_cast<std::size_t>(y) * values;
+        for (std::size_t i = 0; i < values; ++i) {
+            if (sixteen) {
+                const auto v = quantised<std::uint16_t>(source[i], 65535.0);
+                out[2 * i] = static_cast<std::uint8_t>(v >> 8); // big-endian in the file
+                out[2 * i + 1] = static_cast<std::uint8_t>(v & 0xff);
+            } else {
+                out[i] = quantised<png_byte>(source[i], 255.0);
+            }
+        }
+    };
+    if (!appendPngImageData(rows, kPngLevel, encode.bytes))
+        return Error{"encoding failed (not enough memory to compress the image)"};
     return std::move(encode.bytes);
 }
 

@@ -17,7 +17,7 @@ namespace px {
 // Reads the header of the PNG file whose whole content is `bytes` (read once, through the input's
 // own descriptor: InputFile); libpng's errors are kept (never printed) and come back as the
 // problem.
-Result<std::unique_ptr<ImageDecoder>> openPng(std::string bytes);
+Result<std::unique_ptr<ImageDecoder>> openPng(std::shared_ptr<const std::string> bytes);
 
 // Encodes 8 or 16 bits a channel, 1 to 4 channels. Values clamp to [0, 1] and round to nearest,
 // half up (as OpenImageIO's writer, which differs only within a float's precision of a half).

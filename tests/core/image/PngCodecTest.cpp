@@ -185,6 +185,8 @@ private slots:
     void writesEveryValueAsOpenImageIO();
     void damagedDataNamesTheFile();
     void neverLoadsTheImageModule();
+    void parallelStripsAreOneStream_data();
+    void parallelStripsAreOneStream();
 
 private:
     QTemporaryDir m_dir;
@@ -361,6 +363,112 @@ void PngCodecTest::neverLoadsTheImageModule() {
                              std::istreambuf_iterator<char>());
     QVERIFY2(mapped.find("libparallax-oiio") == std::string::npos,
              "reading or writing a PNG loaded the OpenImageIO module");
+}
+
+void PngCodecTest::parallelStripsAreOneStream_data() {
+    QTest::addColumn<int>("bits");
+    QTest::addColumn<int>("channels");
+    for (int bits : {8, 16})
+        for (int channels = 1; channels <= 4; ++channels)
+            QTest::addRow("%d-bit %d channels", bits, channels) << bits << channels;
+}
+
+// Images of many strips (PngDeflate.h): the IDAT data is one zlib stream that zlib itself inflates
+// with its Adler-32 checked, to one filter byte and row a line; OpenImageIO decodes every value
+// as quantised; and the strips cost no more than 1% against libpng's one stream at that level.
+void PngCodecTest::parallelStripsAreOneStream() {
+    QFETCH(int, bits);
+    QFETCH(int, channels);
+    const unsigned seed = std::random_device{}();
+    std::mt19937 rng(seed);
+    const int width = 200 + static_cast<int>(rng() % 1300),
+              height = 300 + static_cast<int>(rng() % 1200);
+    const double top = bits == 8 ? 255.0 : 65535.0;
+    Image image(width, height, channels);
+    // Rows of noise, flat runs and ramps: every filter gets chosen somewhere.
+    for (int y = 0; y < height; ++y) {
+        const int kind = static_cast<int>(rng() % 3);
+        const float level = static_cast<float>(rng() % 1000) / 999.0f;
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < channels; ++c)
+                image.at(x, y, c) = kind == 0   ? static_cast<float>(rng() % 100000) / 99999.0f
+                                    : kind == 1 ? level
+                                                : static_cast<float>(x + c * 7) / width;
+    }
+    const std::string ours = path("strips.png");
+    ImageWriteOptions options;
+    options.format = bits == 8 ? PixelFormat::UInt8 : PixelFormat::UInt16;
+    QVERIFY(writeImage(ours, image, options).ok());
+    std::ifstream in(ours, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+
+    std::string stream; // every IDAT's data in order
+    for (std::size_t at = 8; at + 12 <= bytes.size();) {
+        const std::uint32_t length = static_cast<unsigned char>(bytes[at]) << 24 |
+                                     static_cast<unsigned char>(bytes[at + 1]) << 16 |
+                                     static_cast<unsigned char>(bytes[at + 2]) << 8 |
+                                     static_cast<unsigned char>(bytes[at + 3]);
+        if (bytes.compare(at + 4, 4, "IDAT") == 0)
+            stream += bytes.substr(at + 8, length);
+        at += 12 + length;
+    }
+    const std::size_t lineBytes = static_cast<std::size_t>(width) * channels * bits / 8 + 1;
+    std::vector<unsigned char> filtered(lineBytes * height + 1);
+    uLongf size = static_cast<uLongf>(filtered.size());
+    QCOMPARE(::uncompress(filtered.data(), &size, reinterpret_cast<const Bytef*>(stream.data()),
+                          static_cast<uLong>(stream.size())),
+             Z_OK);
+    QCOMPARE(static_cast<std::size_t>(size), lineBytes * height);
+
+    Image back;
+    QVERIFY(readWithOiio(ours, back));
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        const double want = std::floor(std::clamp(double(image.pixels[i]), 0.0, 1.0) * top + 0.5);
+        if (double(std::lround(double(back.pixels[i]) * top)) != want)
+            QFAIL(qPrintable(
+                QString("seed %1: %2x%3, value %4").arg(seed).arg(width).arg(height).arg(i)));
+    }
+
+    // libpng's own file of the same values, its filter heuristic, the level the core uses (5).
+    const std::string theirs = path("serial.png");
+    FILE* file = std::fopen(theirs.c_str(), "wb");
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png_create_info_struct(png);
+    QVERIFY(file && png && info);
+    if (setjmp(png_jmpbuf(png)) != 0)
+        QFAIL("libpng failed writing the reference");
+    png_init_io(png, file);
+    png_set_compression_level(png, 5);
+    static constexpr int kColour[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA,
+                                      PNG_COLOR_TYPE_RGB, PNG_COLOR_TYPE_RGB_ALPHA};
+    png_set_IHDR(png, info, width, height, bits, kColour[channels - 1], PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    std::vector<png_byte> row(lineBytes - 1);
+    for (int y = 0; y < height; ++y) {
+        for (int i = 0; i < width * channels; ++i) {
+            const auto v = static_cast<unsigned>(std::floor(
+                std::clamp(double(image.pixels[static_cast<std::size_t>(y) * width * channels + i]),
+                           0.0, 1.0) *
+                    top +
+                0.5));
+            if (bits == 16) {
+                row[2 * i] = static_cast<png_byte>(v >> 8);
+                row[2 * i + 1] = static_cast<png_byte>(v & 0xff);
+            } else {
+                row[i] = static_cast<png_byte>(v);
+            }
+        }
+        png_write_row(png, row.data());
+    }
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
+    std::fclose(file);
+    const auto serial = QFileInfo(QString::fromStdString(theirs)).size();
+    qInfo("seed %u: %dx%d: %zu bytes in parallel strips, %lld by libpng alone", seed, width, height,
+          bytes.size(), static_cast<long long>(serial));
+    QVERIFY2(static_cast<double>(bytes.size()) <= 1.01 * static_cast<double>(serial) + 1024,
+             qPrintable(QString("seed %1").arg(seed)));
 }
 
 QTEST_GUILESS_MAIN(PngCodecTest)

@@ -27,6 +27,8 @@ struct HeightLoadOptions {
     HeightChannel channel = HeightChannel::Red; // grey images have only one channel: that one
     bool invert = false;                        // depth map (white = deep): h = 1 - value
     bool allowLarge = false;                    // sides over 16384 are refused otherwise
+    std::string layer; // a multi-part or layered EXR's part or layer (ImageReadOptions::layer)
+    int page = -1;     // a multi-page TIFF's page, an EXR's part by number (ImageReadOptions::page)
     bool normalize =
         false; // remap [min,max] to [0,1]; without it values outside [0,1] are an error
     // Set: values in [lo, hi] read as [0, 1], any value outside it is an error (the file is not

@@ -21,16 +21,29 @@ struct ImageReadOptions {
     // renderer computes from it, and one infinite texel turns a whole channel black.
     float maxMagnitude = std::numeric_limits<float>::infinity();
     std::string limitReason;
+    // Which image of a file that holds several: a TIFF page or an EXR part counted from 0, an
+    // EXR part or channel layer ("height" for height.Y) by name. A file with several and no
+    // choice is refused with the list (docs/image-files.md).
+    std::string layer;
+    int page = -1;
 };
 
 // The most a colour (albedo) map may hold as stored: the renderer decodes sRGB into 16-bit floats,
 // which overflow from about 100 on. Float files may stray a little past 0 to 1; not that far.
 ImageReadOptions colourMapReading();
 
-// Reads every channel of the first subimage as float, values as stored (8/16-bit scaled to
-// [0,1], float verbatim). Errors: missing or unreadable file, not an image, truncated data,
-// zero size, a side over maxSide, NaN/Inf texels, texels over maxMagnitude.
+// Reads every channel of the image (or the chosen page, part or layer) as float, values as stored
+// (8/16-bit scaled to [0,1], float verbatim), turned upright by the file's orientation. The file
+// is read once through the descriptor it was opened by; its format is told by its content. Errors:
+// missing or unreadable file, not an image, damaged or truncated data, a claim larger than the
+// file can hold or the process can allocate (checked before any texel memory is taken), zero
+// size, a side over maxSide, several images and none chosen, NaN/Inf texels, texels over
+// maxMagnitude. What the reader did beyond decoding (a turn, the part read) goes to the note sink.
 Result<Image> readImage(const std::string& path, const ImageReadOptions& options = {});
+
+// Where readImage's notes go: by default stderr as "note: FILE: ..."; the editor sets its own.
+using ImageNoteSink = void (*)(const std::string& note);
+void setImageNoteSink(ImageNoteSink sink);
 
 enum class PixelFormat { UInt8, UInt16, Half, Float };
 
