@@ -85,8 +85,14 @@ function(px_add_cli_test)
     set(T_TIMEOUT 120)
   endif()
   math(EXPR T_TIMEOUT "${T_TIMEOUT} * ${PX_TIMEOUT_SCALE}")
+  # Fault hooks (PX_TEST_*, PX_BAKE_TEST_INTERRUPT_AT) are read only by the test build of the
+  # program (tests/faults/FaultCliMain.cpp); the shipped parallax-cli ignores them.
+  set(_cli parallax-cli)
+  if(T_ENV MATCHES "PX_(BAKE_)?TEST_")
+    set(_cli parallax-cli-faults)
+  endif()
   add_test(NAME cli.${T_NAME}
-           COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:parallax-cli>;${T_COMMAND}"
+           COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:${_cli}>;${T_COMMAND}"
                    -DEXPECT_RC=${T_RC} "-DEXPECT=${T_EXPECT}" "-DREJECT=${T_REJECT}"
                    "-DCREATES=${T_CREATES}" "-DUNCHANGED=${T_UNCHANGED}" "-DONLY=${T_ONLY}"
                    "-DOUT_FILE=${T_OUT_FILE}" "-DOUT_EXPECT=${T_OUT_EXPECT}" -P ${PX_RUN_CLI}

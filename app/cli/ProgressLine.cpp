@@ -1,8 +1,9 @@
 #include "ProgressLine.h"
 
+#include "parallax/io/Temporaries.h"
+
 #include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <unistd.h>
 
 namespace px::cli {
@@ -10,8 +11,7 @@ namespace px::cli {
 ProgressLine::ProgressLine(std::string what)
     : m_what(std::move(what)), m_start(std::chrono::steady_clock::now()),
       m_tty(isatty(STDERR_FILENO) != 0) {
-    if (const char* at = std::getenv("PX_BAKE_TEST_INTERRUPT_AT"))
-        m_interruptAt = std::strtof(at, nullptr);
+    m_interruptAt = testHooks().interruptAtProgress; // set by the fault suite's build only
 }
 
 ProgressLine::~ProgressLine() {

@@ -1,7 +1,8 @@
 // The fault suite's build of parallax-cli: the shipped program plus the fault-injection hooks
 // (Temporaries.h), read from the environment here and only here: PX_TEST_FAIL_WRITE_AT=N fails a
 // file's write with ENOSPC once N bytes are written; PX_TEST_RAISE=SIGNAL:POINT raises INT, TERM,
-// HUP, KILL or STOP the first time the run reaches POINT (POINT@N: the N-th time).
+// HUP, KILL or STOP the first time the run reaches POINT (POINT@N: the N-th time);
+// PX_BAKE_TEST_INTERRUPT_AT=F raises SIGINT once a command's progress reaches F.
 
 #include "Cli.h"
 #include "parallax/io/Temporaries.h"
@@ -27,6 +28,8 @@ int main(int argc, char** argv) {
     px::TestHooks hooks;
     if (const char* at = std::getenv("PX_TEST_FAIL_WRITE_AT"))
         hooks.failWriteAt = std::atoll(at);
+    if (const char* at = std::getenv("PX_BAKE_TEST_INTERRUPT_AT"))
+        hooks.interruptAtProgress = std::strtof(at, nullptr);
     if (const char* spec = std::getenv("PX_TEST_RAISE")) {
         const std::string text(spec);
         const std::string name = text.substr(0, text.find(':'));

@@ -55,6 +55,7 @@ public:
 struct TestHooks {
     long long failWriteAt = -1; // a file's write fails with ENOSPC once this many bytes are written
     void (*reached)(const char* point) = nullptr; // called at each moment below
+    float interruptAtProgress = -1.0f; // a command's progress raises SIGINT once this far (0..1)
 };
 void setTestHooks(const TestHooks& hooks);
 const TestHooks& testHooks();
