@@ -108,7 +108,7 @@ void printResult(const ExportResult& result, const std::string& format) {
         std::cout << "note: " << note << "\n";
     if (!result.kept.empty()) {
         std::cout << "kept " << result.kept.size() << " file"
-                  << (result.kept.size() == 1 ? "" : "s") << " that no export wrote:";
+                  << (result.kept.size() == 1 ? "" : "s") << " that this export did not write:";
         for (const std::string& file : result.kept)
             std::cout << " " << file;
         std::cout << "\n";

@@ -104,7 +104,7 @@ int dumpAll(const std::string& dir) {
                 return 1;
         }
     }
-    if (Result<std::vector<std::string>> s = stage->commit(update); !s)
+    if (Status s = stage->commit(update); !s)
         return fail(s.error().message);
     const std::size_t count = update.moves.size() - vertexStages.size();
     std::cout << "wrote " << count << " variants: " << count << " fragment and "

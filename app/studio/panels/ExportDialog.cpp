@@ -131,7 +131,7 @@ ExportDialog::ExportDialog(const Material& material, const QString& materialFile
             QStringList kept;
             for (const std::string& f : result->kept)
                 kept << QString::fromStdString(f);
-            lines << tr("Kept %n file(s) no export wrote: %1", nullptr,
+            lines << tr("Kept %n file(s) this export did not write: %1", nullptr,
                         static_cast<int>(kept.size()))
                          .arg(kept.join(QStringLiteral(", ")));
         }

@@ -111,7 +111,6 @@ Result<ExportFolder> ExportFolder::begin(const fs::path& requested, bool force) 
                                                stage.error().message + ")");
     ExportFolder folder(target, std::move(*lock), std::move(*stage));
     folder.m_replace = replace;
-    folder.m_earlier = std::move(earlier);
     return folder;
 }
 
@@ -138,57 +137,36 @@ Result<ExportFolder::Committed> ExportFolder::commit(std::string_view descriptio
 }
 
 Result<ExportFolder::Committed> ExportFolder::commitStaged(std::string_view description) {
-    const std::string header = "Written by Parallax Studio " + std::string(kVersion) + ": " +
-                               std::string(description) + "\n";
-    // An update moves its manifest first, listing the earlier export's files too: whatever prefix
-    // of the renames a power cut leaves, the manifest names every file an export wrote there.
-    std::vector<std::string> listed = m_files;
-    for (const std::string& name : m_earlier) {
-        if (m_replace && !contains(listed, name))
-            listed.push_back(name);
-    }
-    std::string marker = header;
-    for (const std::string& file : listed)
+    std::string marker = "Written by Parallax Studio " + std::string(kVersion) + ": " +
+                         std::string(description) + "\n";
+    for (const std::string& file : m_files)
         marker += file + "\n";
     if (Status s = writeTextFile(pathFor(std::string(kExportMarker)), marker); !s)
         return asTarget(s.error());
+    StagedSet::Update update;
+    update.commitPoint = "export-commit";
     if (!m_replace) {
-        StagedSet::Update update;
-        update.commitPoint = "export-commit";
-        if (Result<std::vector<std::string>> s = m_stage.commit(update); !s)
+        if (Status s = m_stage.commit(update); !s)
             return fileError(where(m_target),
                              "cannot move the export into place (" + s.error().message + ")");
         return Committed{m_files, {}};
     }
-    return updateInPlace(header, listed.size() != m_files.size());
+    return updateInPlace(std::move(update));
 }
 
-Result<ExportFolder::Committed> ExportFolder::updateInPlace(const std::string& header,
-                                                            bool relist) {
+// An update replaces the files this export writes and removes nothing: a file the earlier export
+// wrote that this one does not is kept and named, since the marker that lists it is a file found
+// on disk, and what such a file says is never a reason to delete.
+Result<ExportFolder::Committed> ExportFolder::updateInPlace(StagedSet::Update update) {
     // Everything that can be checked is checked before the first file moves.
     if (::access(m_target.c_str(), W_OK | X_OK) != 0)
         return fileError(where(m_target), "cannot update the earlier export (" +
                                               systemReason(errno) + "); it is unchanged");
-    StagedSet::Update update;
-    update.moves.emplace_back(kExportMarker); // first: see commitStaged
+    update.moves.emplace_back(kExportMarker);
     update.moves.insert(update.moves.end(), m_files.begin(), m_files.end());
-    for (const std::string& name : m_earlier) {
-        if (!contains(m_files, name))
-            update.removals.push_back(name);
-    }
-    update.commitPoint = "export-commit";
     update.updatePoint = "export-update";
-    if (relist) { // then the manifest of what is there now
-        update.then = [&] {
-            std::string marker = header;
-            for (const std::string& file : m_files)
-                marker += file + "\n";
-            return writeTextFile((m_target / kExportMarker).string(), marker);
-        };
-    }
-    Result<std::vector<std::string>> kept = m_stage.commit(update);
-    if (!kept)
-        return kept.error();
+    if (Status s = m_stage.commit(update); !s)
+        return s.error();
     Committed result{m_files, {}};
     std::error_code ec;
     for (fs::directory_iterator it(m_target, ec), end; !ec && it != end; it.increment(ec)) {

@@ -64,10 +64,7 @@ Status writeImageSet(const std::vector<std::string>& files,
     update.moves = names;
     update.commitPoint = "frames-commit";
     update.updatePoint = "frames-update";
-    Result<std::vector<std::string>> committed = stage->commit(update);
-    if (!committed)
-        return committed.error();
-    return success();
+    return stage->commit(update);
 }
 
 } // namespace px

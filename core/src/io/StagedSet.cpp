@@ -61,7 +61,7 @@ StagedSet::~StagedSet() {
     discardTemporaryAt(m_parent.get(), m_name);
 }
 
-Result<std::vector<std::string>> StagedSet::commit(const Update& update) {
+Status StagedSet::commit(const Update& update) {
     if (m_fresh) {
         testInterruptPoint(update.commitPoint);
         if (Status s = replaceAt(m_parent.get(), m_name, m_parent.get(), m_into.filename().string(),
@@ -70,28 +70,15 @@ Result<std::vector<std::string>> StagedSet::commit(const Update& update) {
             return s.error();
         releaseTemporary(m_handle);
         m_name.clear(); // it is the target now
-        return std::vector<std::string>{};
+        return success();
     }
     // Everything that can be refused is refused before the first file moves.
-    std::vector<std::string> kept, removals;
     const int into = m_parent.get();
     for (const std::string& name : update.moves) {
         if (!bareName(name))
             return Error{"internal: \"" + name + "\" is not a file name"};
         if (Status s = checkReplaceableAt(into, name, (m_into / name).string()); !s)
             return s.error();
-    }
-    for (const std::string& name : update.removals) {
-        struct stat st {};
-        if (!bareName(name) || ::fstatat(into, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0)
-            continue;
-        if (!S_ISREG(st.st_mode)) {
-            kept.push_back(name);
-            continue;
-        }
-        if (Status s = checkReplaceableAt(into, name, (m_into / name).string()); !s)
-            return s.error(); // a regular file: refused only as an input
-        removals.push_back(name);
     }
     testInterruptPoint(update.commitPoint);
     const InterruptDeferral deferral; // Ctrl-C waits for the last rename
@@ -106,14 +93,8 @@ Result<std::vector<std::string>> StagedSet::commit(const Update& update) {
     releaseTemporary(m_handle);
     discardTemporaryAt(into, m_name); // empty now
     m_name.clear();
-    for (const std::string& name : removals)
-        static_cast<void>(removeOwnedAt(into, name, (m_into / name).string())); // refused: kept
-    if (update.then) {
-        if (Status s = update.then(); !s)
-            return s.error();
-    }
     ::fsync(into);
-    return kept;
+    return success();
 }
 
 } // namespace px

@@ -7,6 +7,7 @@
 
 #include <QTemporaryDir>
 #include <QtTest>
+#include <algorithm>
 
 using namespace px;
 namespace fs = std::filesystem;
@@ -23,6 +24,7 @@ private slots:
     void abandonedExportLeavesNothing();
     void existingFolderNeedsForce();
     void forceReplacesAPreviousExport();
+    void aPlantedMarkerDecidesNoDeletion();
     void forceNeverReplacesForeignFiles();
     void forceKeepsFilesNoExportWrote();
     void emptyFolderIsReplacedWithoutForce();
@@ -86,9 +88,36 @@ void ExportFolderTest::forceReplacesAPreviousExport() {
         folder->add(name);
         QVERIFY(folder->commit("test").ok());
     }
-    QVERIFY(!fs::exists(path("out/first.txt"))); // the earlier export listed it
+    // The earlier export's file is kept: the marker listing it is found on disk, never obeyed.
+    QCOMPARE(*readTextFile(path("out/first.txt").string()), std::string("first.txt"));
     QVERIFY(fs::exists(path("out/second.txt")));
     QCOMPARE(entries(), QStringList{"out"}); // no staging or old folder left
+}
+
+// A marker is a file found on disk: one planted in a folder (an archive's leftover) listing the
+// user's files makes --force remove none of them, whatever names it lists.
+void ExportFolderTest::aPlantedMarkerDecidesNoDeletion() {
+    fs::create_directories(path("out"));
+    const std::vector<std::string> victims = {"notes.txt", "a.png", "README", ".bashrc"};
+    std::string marker = "Written by Parallax Studio 0.1.0: planted\n";
+    for (const std::string& name : victims) {
+        QVERIFY(writeTextFile(path(("out/" + name).c_str()).string(), "the user's " + name).ok());
+        marker += name + "\n";
+    }
+    QVERIFY(writeTextFile((path("out") / kExportMarker).string(), marker).ok());
+    Result<ExportFolder> folder = ExportFolder::begin(path("out"), true);
+    QVERIFY2(folder.ok(), folder.ok() ? "" : folder.error().message.c_str());
+    QVERIFY(writeTextFile(folder->pathFor("b.png"), "new").ok());
+    folder->add("b.png");
+    Result<ExportFolder::Committed> committed = folder->commit("test");
+    QVERIFY2(committed.ok(), committed.ok() ? "" : committed.error().message.c_str());
+    for (const std::string& name : victims) {
+        QCOMPARE(*readTextFile(path(("out/" + name).c_str()).string()), "the user's " + name);
+        QVERIFY2(std::find(committed->kept.begin(), committed->kept.end(), name) !=
+                     committed->kept.end(),
+                 name.c_str());
+    }
+    QCOMPARE(*readTextFile(path("out/b.png").string()), std::string("new"));
 }
 
 // Engines keep their references to the textures in files beside them (Unity .meta, Godot

@@ -8,10 +8,11 @@
 // Replacing an existing folder needs `force`, and even then only a folder that is empty or that a
 // previous export wrote (it holds the marker file kExportMarker): --force must never wipe a folder
 // of someone's other files because its name was mistyped. An earlier export is updated in place:
-// each new file is renamed over its old self, files the earlier export listed and this one does
-// not write are removed, and every other file (Unity .meta, Godot .import, a user's .mat) is kept,
-// since engines keep their references to the textures in those files. An update never replaces or
-// removes an input of the run (Inputs.h): an earlier export holding the material being exported,
+// each new file is renamed over its old self and nothing is removed: every other file (Unity .meta,
+// Godot .import, a user's .mat, a file only the earlier export wrote) is kept and named, since
+// engines keep their references to the textures in those files, and the marker that lists an
+// earlier export's files is a file found on disk, which never decides a deletion. An update never
+// replaces an input of the run (Inputs.h): an earlier export holding the material being exported,
 // or one of its maps, is refused before anything is written.
 
 #include "parallax/Result.h"
@@ -47,7 +48,7 @@ public:
 
     struct Committed {
         std::vector<std::string> files; // written, in order
-        std::vector<std::string> kept;  // files of an earlier export's folder that no export wrote
+        std::vector<std::string> kept; // files already in the folder that this export did not write
     };
     // Writes the marker, then moves the staging folder into place, or its files into an earlier
     // export (see above), and lets go of the folder's lock. On failure the target is as it was.
@@ -63,14 +64,13 @@ private:
     ExportFolder(std::filesystem::path target, OutputLock lock, StagedSet stage)
         : m_target(std::move(target)), m_lock(std::move(lock)), m_stage(std::move(stage)) {}
     Result<Committed> commitStaged(std::string_view description);
-    Result<Committed> updateInPlace(const std::string& header, bool relist);
+    Result<Committed> updateInPlace(StagedSet::Update update);
     std::filesystem::path m_target;
     std::optional<OutputLock> m_lock; // declared before the stage: released after it is gone,
                                       // or once the export is in place
     StagedSet m_stage;
     std::vector<std::string> m_files;
-    std::vector<std::string> m_earlier; // the files the earlier export's marker lists
-    bool m_replace = false;             // the target exists and is replaced
+    bool m_replace = false; // the target exists and is updated
 };
 
 } // namespace px

@@ -12,7 +12,6 @@
 #include "parallax/io/OutputGate.h"
 
 #include <filesystem>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,16 +35,14 @@ public:
     bool fresh() const { return m_fresh; }
 
     struct Update {
-        std::vector<std::string> moves;    // staged names, renamed in this order
-        std::vector<std::string> removals; // names in `into` removed after (an earlier export's)
-        const char* commitPoint = "";      // test moments (Temporaries.h): all staged; half moved
+        std::vector<std::string> moves; // staged names, renamed in this order
+        const char* commitPoint = "";   // test moments (Temporaries.h): all staged; half moved
         const char* updatePoint = "";
-        std::function<Status()> then; // last, Ctrl-C still waiting (an export's final manifest)
     };
-    // Renames the stage into place (fresh), or moves and removes as `update` says, every target
-    // checked by the output gate before the first rename. Returns the removals that were kept
-    // (not regular files).
-    Result<std::vector<std::string>> commit(const Update& update);
+    // Renames the stage into place (fresh), or moves its files as `update` says, every target
+    // checked by the output gate before the first rename. Nothing already in `into` is removed:
+    // what a file found there says is never a reason to delete anything.
+    Status commit(const Update& update);
 
 private:
     StagedSet() = default;
