@@ -33,6 +33,8 @@ BakeDeviceChoice chooseBakeDevice(BakeDevicePreference preference, const QString
     case BakeDevicePreference::Automatic:
         break;
     }
+    if (glRenderer.isEmpty()) // nothing probed it (no viewport): no reason to leave the CPU
+        return {false, QObject::tr("the GL renderer is unknown")};
     if (isSoftwareRasteriser(glRenderer))
         return {false, QObject::tr("the GPU, %1, is a software rasteriser: the CPU bakes faster")
                            .arg(renderer)};

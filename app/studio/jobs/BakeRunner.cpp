@@ -5,7 +5,6 @@
 #include "jobs/SharedGlContext.h"
 #include "parallax/bake/ConeMapBaker.h"
 #include "parallax/bake/ConeMapFinish.h"
-#include "preview/GlSupport.h"
 
 #include <QMetaObject>
 #include <QOffscreenSurface>
@@ -174,7 +173,7 @@ void BakeRunner::next() {
     std::shared_ptr<QOffscreenSurface> surface;
     if (kind == BakeKind::Cone || kind == BakeKind::RelaxedCone) {
         const bool shared = QOpenGLContext::globalShareContext() != nullptr;
-        request.device = chooseBakeDevice(m_preference, probeOpenGl().renderer, shared);
+        request.device = chooseBakeDevice(m_preference, m_renderer, shared);
         if (request.device.gpu)
             surface = workerSurface();
     }

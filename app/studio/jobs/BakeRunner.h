@@ -20,6 +20,7 @@
 #include <chrono>
 #include <deque>
 #include <memory>
+#include <utility>
 
 namespace px::studio {
 
@@ -70,6 +71,8 @@ public:
     void start(const BakeRequest& request); // queued behind a running bake
     // Where cone bakes started from now on run (the settings' choice at first).
     void setDevicePreference(BakeDevicePreference preference) { m_preference = preference; }
+    // The GL renderer the viewports run on (GL_RENDERER): a software rasteriser bakes on the CPU.
+    void setRenderer(QString renderer) { m_renderer = std::move(renderer); }
     BakeDevicePreference devicePreference() const { return m_preference; }
     void cancel(); // the running bake and every queued one
     bool isBusy() const { return m_running || !m_queue.empty(); }
@@ -89,6 +92,7 @@ private:
     void done();
 
     BakeDevicePreference m_preference = savedBakeDevicePreference();
+    QString m_renderer;
     std::deque<BakeRequest> m_queue;
     std::optional<BakeRequest> m_runningRequest;
     bool m_running = false;

@@ -97,6 +97,9 @@ bool sameMap(const MaterialAssets& a, const MaterialAssets& b, MapKind kind) {
 } // namespace
 
 void adoptSavedMaps(DocumentState& state, const DocumentState& saved) {
+    // The light a material is saved with is the view's, not an undo step: every step has the
+    // saved one, so undoing to the saved state is clean again.
+    state.material.light = saved.material.light;
     for (MapKind kind : kAllMapKinds) {
         if (!state.isUnsaved(kind) || saved.isUnsaved(kind) || !saved.hasMap(kind) ||
             mapPath(saved.material.maps, kind).empty() ||

@@ -53,6 +53,7 @@ MapsPanel::MapsPanel(MaterialDocument* document, BakeRunner* baker, QWidget* par
                             "Sobel or Scharr (3x3, smoother). Each gives the same strength."));
     connect(m_filter, &QComboBox::currentIndexChanged, this, &MapsPanel::refresh);
     auto* form = new QFormLayout;
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows); // a narrow panel: the field under its label
     form->addRow(tr("Normal filter"), m_filter);
     m_occlusionDistance = makeOcclusionDistanceBox(this);
     form->addRow(tr("Occlusion distance"), m_occlusionDistance);

@@ -9,6 +9,7 @@ QDoubleSpinBox* makeOcclusionDistanceBox(QWidget* parent) {
     auto* box = new QDoubleSpinBox(parent);
     box->setObjectName(QStringLiteral("occlusion-distance"));
     box->setRange(0.0, 100.0);
+    box->setMinimumWidth(0); // the panel decides the width (it may be narrow)
     box->setDecimals(3);
     box->setSingleStep(0.01);
     box->setSuffix(QObject::tr(" uv"));

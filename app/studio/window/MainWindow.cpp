@@ -74,6 +74,7 @@ MainWindow::MainWindow(const QString& liveReason, QWidget* parent)
 
     m_rendererLabel = new QLabel(this);
     const GlProbe& gl = probeOpenGl();
+    m_baker->setRenderer(gl.renderer);
     m_rendererLabel->setText(
         liveReason.isEmpty() ? tr("OpenGL %1.%2 · %3").arg(gl.major).arg(gl.minor).arg(gl.renderer)
                              : tr("No live preview"));

@@ -5,7 +5,7 @@
 #include "panels/ComparePanel.h"
 #include "preview/Viewport.h"
 #include "preview/ViewportGrid.h"
-#include "widgets/BakeDeviceMenu.h"
+#include "window/BakeDeviceMenu.h"
 #include "window/MainWindow.h"
 #include "window/MainWindowActions.h"
 

@@ -451,7 +451,8 @@ void ExporterTest::neverOverwritesWithoutForce() {
     QCOMPARE(*readTextFile(path("out/bricks.json")), before);
     m_options.force = true;
     QVERIFY(run(ExportFormat::Godot).ok());
-    QVERIFY(!fs::exists(path("out/bricks.json"))); // the folder is the new export, whole
+    // Nothing is removed: the earlier export's material is kept as it was (and named as kept).
+    QCOMPARE(*readTextFile(path("out/bricks.json")), before);
     QVERIFY(fs::exists(path("out/bricks.tres")));
 }
 

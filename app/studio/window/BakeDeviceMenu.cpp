@@ -1,4 +1,4 @@
-#include "widgets/BakeDeviceMenu.h"
+#include "window/BakeDeviceMenu.h"
 
 #include "jobs/BakeRunner.h"
 
