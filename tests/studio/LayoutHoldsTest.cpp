@@ -58,12 +58,13 @@ QString mapsButtonsOutOfSight(MainWindow* w) {
                                 .arg(c->metaObject()->className(), c->objectName())
                                 .arg(c->minimumSizeHint().width());
     }
-    const QRect viewport = area->viewport()->rect();
     for (QAbstractButton* b : w->mapsPanel()->findChildren<QAbstractButton*>()) {
         if (!b->isVisibleTo(w->mapsPanel()))
             continue;
         area->ensureWidgetVisible(b, 0, 0);
         QCoreApplication::processEvents();
+        // The viewport as it is now: the vertical scroll bar comes and goes with the scrolling.
+        const QRect viewport = area->viewport()->rect();
         const QRect r(b->mapTo(area->viewport(), QPoint(0, 0)), b->size());
         if (!viewport.contains(r))
             problems << QString("%1 at %2,%3 %4x%5 outside the panel's %6x%7")

@@ -105,6 +105,7 @@ MapRow::MapRow(MapKind kind, bool bakeable, QWidget* parent) : QWidget(parent), 
     text->addWidget(m_source);
     text->addWidget(m_warning);
     auto* top = new QHBoxLayout;
+    m_top = top;
     top->setContentsMargins(0, 0, 0, 0);
     top->addWidget(m_thumbnail);
     top->addLayout(text, 1);
@@ -156,8 +157,13 @@ QSize MapRow::minimumSizeHint() const {
 
 void MapRow::arrange(int width) {
     // Beside the text where the title and the buttons both fit, else under it.
-    const int wide = m_thumbnail->width() + m_title->sizeHint().width() +
-                     m_buttons->sizeHint().width() + 3 * m_arrangement->spacing() + 8;
+    // The texts' own minimum counts too: a source or warning line may be wider than the title.
+    const QMargins m = m_arrangement->contentsMargins();
+    const int texts =
+        std::max(m_thumbnail->width() + m_title->sizeHint().width() + 2 * m_arrangement->spacing(),
+                 m_top->minimumSize().width());
+    const int wide =
+        texts + m_buttons->sizeHint().width() + m_arrangement->spacing() + m.left() + m.right() + 8;
     const auto direction = width >= wide ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom;
     if (m_arrangement->direction() != direction)
         m_arrangement->setDirection(direction);

@@ -55,6 +55,7 @@ private:
     // width is the panel's (its own needs never widen the panel past its dock).
     void arrange(int width);
     QBoxLayout* m_arrangement = nullptr;
+    QBoxLayout* m_top = nullptr; // the thumbnail and the texts
     QWidget* m_buttons = nullptr;
     void showThumbnail(const QImage& thumbnail, double ratio);
     MapKind m_kind;
