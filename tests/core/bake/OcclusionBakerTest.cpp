@@ -192,9 +192,11 @@ void OcclusionBakerTest::flatAndPlanesAreUnoccluded() {
         const float a = dyadic ? (trial ? 1.0f / 64 : -3.0f / 256) : slope(rng);
         const float b = dyadic ? (trial ? -1.0f / 128 : 5.0f / 512) : slope(rng);
         HeightField plane(W, H);
+        const int cx = W / 2, cy = H / 2; // the plane's level point: a whole texel
         for (int y = 0; y < H; ++y) {
             for (int x = 0; x < W; ++x)
-                plane.at(x, y) = 0.5f + a * (x - W / 2) + b * (y - H / 2);
+                plane.at(x, y) =
+                    0.5f + a * static_cast<float>(x - cx) + b * static_cast<float>(y - cy);
         }
         const double D = 6.0 / W; // 6 texels across, 4.8 down
         const OcclusionMaps maps = bake(plane, 2.0, D, WrapMode::Clamp, 0);

@@ -84,7 +84,8 @@ double referenceHorizon(const HeightField& field, const OcclusionReferenceSettin
     }
     double best = open ? 0.0 : -kInf;
     // In chunks of 1/4 uv, so that an unlimited search can stop once nothing can rise enough.
-    for (double from = 0.0; from < end; from += 0.25) {
+    for (int chunk = 0; 0.25 * chunk < end; ++chunk) {
+        const double from = 0.25 * chunk;
         if (from > 0.0 && (top - zp) / from <= best)
             break;
         const double to = std::min(from + 0.25, end);
