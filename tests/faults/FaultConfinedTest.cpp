@@ -365,8 +365,8 @@ void FaultConfinedTest::standardOutputLost_data() {
     QTest::addColumn<QString>("reason");
     const QStringList commands = {
         "trace --height h.png --rays 8 --out -",
-        "bench --height h.png --rays 4 --polar 60 --techniques pom --defaults-only --repeats 0 "
-        "--quiet --out -",
+        QString("bench --height h.png --rays 4 --polar 60 --techniques pom --defaults-only ") +
+            "--repeats 0 --quiet --out -",
         "shader --technique pom --out -",
         "shader --list",
         "recommend --height h.png --max-polar 60 --techniques cone --cache off",

@@ -37,6 +37,7 @@ HeightField randomField(unsigned seed) {
         double phase, amplitude;
     };
     std::vector<Wave> waves;
+    waves.reserve(7);
     for (int k = 0; k < 7; ++k)
         waves.push_back({frequency(rng), frequency(rng) - 3, phase(rng), amplitude(rng)});
     HeightField field(kMapSide, kMapSide);

@@ -18,7 +18,7 @@ using namespace px;
 namespace {
 
 // Writes `w` x `h` x `channels` noise as `file` through OpenImageIO with `attributes`.
-bool writeNoise(const std::string& file, int w, int h, int channels, OIIO::TypeDesc type,
+bool writeNoise(const std::string& file, int w, int h, int channels, const OIIO::TypeDesc& type,
                 const std::vector<std::pair<std::string, std::string>>& attributes,
                 std::mt19937& rng) {
     std::vector<float> texels(static_cast<std::size_t>(w) * h * channels);
