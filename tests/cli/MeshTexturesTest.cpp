@@ -38,6 +38,7 @@ Outcome runCli(const QStringList& args) {
     for (const QString& a : args)
         words.push_back(a.toStdString());
     std::vector<char*> argv;
+    argv.reserve(words.size());
     for (std::string& w : words)
         argv.push_back(w.data());
     std::ostringstream captured;

@@ -33,6 +33,7 @@ Outcome runCli(const std::vector<std::string>& args) {
     std::vector<std::string> words{"parallax-cli"};
     words.insert(words.end(), args.begin(), args.end());
     std::vector<char*> argv;
+    argv.reserve(words.size());
     for (std::string& w : words)
         argv.push_back(w.data());
     std::ostringstream captured;

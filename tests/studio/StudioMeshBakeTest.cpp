@@ -82,7 +82,8 @@ private slots:
                 item = a;
         }
         QVERIFY(item);
-        const DialogRunner previous = setDialogRunner([mesh](QFileDialog&) { return mesh; });
+        const DialogRunner previous =
+            setDialogRunner([mesh](QFileDialog&) { return QString(mesh); });
         item->trigger();
         auto* dialog = w->findChild<MeshBakeDialog*>(QStringLiteral("mesh-bake-dialog"));
         QVERIFY(dialog);

@@ -132,8 +132,9 @@ private slots:
     void bentNormalsAreSavedToAFile() {
         auto w = makeWindow();
         QVERIFY(w);
-        const QString file = m_dir.filePath("bent.png");
-        const DialogRunner previous = setDialogRunner([file](QFileDialog&) { return file; });
+        QString file = m_dir.filePath("bent.png");
+        const DialogRunner previous =
+            setDialogRunner([file](QFileDialog&) { return QString(file); });
         w->startBake(BakeKind::BentNormal);
         QTRY_VERIFY_WITH_TIMEOUT(!w->baker()->isBusy(), 60000);
         setDialogRunner(previous);

@@ -100,7 +100,7 @@ void MeshBoundsTest::initTestCase() {
 }
 
 std::string MeshBoundsTest::write(const std::string& name, const std::string& bytes) const {
-    const std::string path = m_dir.filePath(QString::fromStdString(name)).toStdString();
+    std::string path = m_dir.filePath(QString::fromStdString(name)).toStdString();
     std::ofstream(path, std::ios::binary) << bytes;
     return path;
 }
