@@ -376,7 +376,8 @@ private slots:
         for (QAction* a : w.findChildren<QAction*>())
             if (a->text() == "New &Empty Material")
                 empty = a;
-        QVERIFY(empty);
+        if (empty == nullptr)
+            QFAIL("File > New Empty Material is missing");
         QCOMPARE(empty->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
         empty->trigger();
         const DocumentState& s = w.document()->state();

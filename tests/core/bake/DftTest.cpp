@@ -59,6 +59,7 @@ void DftTest::equalsTheDirectSum() {
         for (const bool inverse : {false, true}) {
             const Dft dft(n, inverse);
             padded += dft.padded() && !inverse;
+            // NOLINTNEXTLINE(performance-unnecessary-copy-initialization): the copy is tested
             const Dft copy = dft; // as each thread takes one
             std::vector<Complex> out(x.size()), work;
             copy.transform(x.data(), out.data(), work);
